@@ -1,0 +1,74 @@
+#pragma once
+/// @file
+/// Strict reading of TOML configuration: every key must be consumed, every value checked, and
+/// every error names `file:line`. Load time only; never used on the RT thread.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "io/config/config_error.h"
+
+namespace rig::io {
+
+/// Parses a TOML file. Throws ConfigError("file:line: ...") if it is missing or malformed.
+toml::table load_toml_file(const std::filesystem::path& file);
+
+/// A view of one TOML table that remembers which keys were read, so that finish() can reject
+/// unknown ones. Numbers accept integers and floats alike.
+class StrictTable {
+ public:
+  /// `context` names the table in messages, e.g. "[rig]".
+  StrictTable(const toml::table& table, std::filesystem::path file, std::string context);
+
+  [[nodiscard]] bool has(std::string_view key) const;
+
+  [[nodiscard]] double number(std::string_view key);
+  [[nodiscard]] double number(std::string_view key, double fallback);
+  /// A number that must lie in [min, max].
+  [[nodiscard]] double number_in(std::string_view key, double min, double max);
+  [[nodiscard]] double number_in(std::string_view key, double fallback, double min, double max);
+  [[nodiscard]] long long integer(std::string_view key);
+  [[nodiscard]] long long integer(std::string_view key, long long fallback);
+  [[nodiscard]] bool boolean(std::string_view key, bool fallback);
+  [[nodiscard]] std::string string(std::string_view key);
+  [[nodiscard]] std::string string(std::string_view key, std::string_view fallback);
+  /// A string that must be one of `allowed`.
+  [[nodiscard]] std::string choice(std::string_view key, std::string_view fallback,
+                                   const std::vector<std::string_view>& allowed);
+  /// A path string, resolved relative to the directory of this file. Must exist.
+  [[nodiscard]] std::filesystem::path existing_path(std::string_view key);
+  [[nodiscard]] std::vector<double> numbers(std::string_view key);
+  /// Array of tables, e.g. [[axle]].
+  [[nodiscard]] std::vector<StrictTable> tables(std::string_view key);
+
+  [[nodiscard]] StrictTable table(std::string_view key);
+  [[nodiscard]] std::optional<StrictTable> optional_table(std::string_view key);
+
+  /// Throws on the first key that was never read.
+  void finish() const;
+
+  /// An error located at `key` (or at the table itself if the key is absent).
+  [[nodiscard]] ConfigError error(std::string_view key, std::string_view what) const;
+  /// An error located at the table.
+  [[nodiscard]] ConfigError error(std::string_view what) const;
+
+  [[nodiscard]] const std::filesystem::path& file() const { return file_; }
+  [[nodiscard]] const std::string& context() const { return context_; }
+  [[nodiscard]] const toml::table& raw() const { return *table_; }
+
+ private:
+  const toml::node& require(std::string_view key);
+  [[nodiscard]] std::string where(const toml::source_region& region) const;
+
+  const toml::table* table_;
+  std::filesystem::path file_;
+  std::string context_;
+  std::vector<std::string> used_;
+};
+
+}  // namespace rig::io

@@ -1,0 +1,30 @@
+#pragma once
+/// @file
+/// The interface the executive's loop calls on each I/O adapter (CAN, ...) once per cycle.
+
+#include <cstdint>
+
+#include "io/io_counters.h"
+#include "model/signals.h"
+
+namespace rig::io {
+
+/// An adapter that exchanges model signals with the outside once per cycle. Both calls run on
+/// the RT thread: non-blocking, allocation-free, no exceptions. Failures are counted, never fatal.
+class CycleIo {
+ public:
+  CycleIo() = default;
+  CycleIo(const CycleIo&) = delete;
+  CycleIo& operator=(const CycleIo&) = delete;
+  virtual ~CycleIo() = default;
+
+  /// Inputs phase: drains everything pending and writes the inputs this adapter owns
+  /// (those whose source is kCan for CAN), marking stale ones invalid with their fallback value.
+  virtual void receive(std::int64_t monotonic_ns, model::Signals& inputs) noexcept = 0;
+  /// Outputs phase: encodes and sends what is due at this time.
+  virtual void transmit(std::int64_t monotonic_ns, const model::Signals& outputs) noexcept = 0;
+  /// Current counters, copied into the cycle's snapshot.
+  virtual void read_counters(IoCounters& counters) const noexcept = 0;
+};
+
+}  // namespace rig::io

@@ -1,0 +1,73 @@
+#pragma once
+/// @file
+/// A fixed-size, plain-data picture of the model's state for tools (LCM, logs, plots). Filled by
+/// the model after each step on request; copied by value through the snapshot ring.
+
+#include <array>
+#include <cstdint>
+
+namespace rig::model {
+
+inline constexpr int kMaxUnits = 4;           ///< vehicles in a combination
+inline constexpr int kMaxWheelsPerUnit = 12;  ///< up to 6 axles with 2 wheels
+inline constexpr int kMaxJoints = 3;          ///< couplings between units
+
+struct WheelReport {
+  double spin_radps = 0;     ///< wheel spin rate
+  double slip_x = 0;         ///< longitudinal slip [-]
+  double slip_y = 0;         ///< lateral slip [-]
+  double force_x_n = 0;      ///< longitudinal tire force
+  double force_y_n = 0;      ///< lateral tire force
+  double load_n = 0;         ///< vertical tire force
+  double deflection_x_m = 0; ///< tire deflection x_e, eq. (24)
+  double deflection_y_m = 0; ///< tire deflection y_e
+  double hub_travel_m = 0;   ///< suspension travel
+  double steer_angle_rad = 0;
+  double brake_torque_nm = 0;
+  double drive_torque_nm = 0;
+};
+
+struct UnitReport {
+  std::array<double, 3> position_m{};         ///< CG in the road frame
+  std::array<double, 3> orientation_rad{};    ///< roll, pitch, yaw
+  std::array<double, 3> velocity_mps{};       ///< CG velocity, body axes
+  std::array<double, 3> angular_velocity_radps{};  ///< body axes
+  std::array<double, 3> acceleration_mps2{};  ///< CG acceleration, body axes
+  std::int32_t wheel_count = 0;
+  std::array<WheelReport, kMaxWheelsPerUnit> wheels{};
+};
+
+struct SteeringReport {
+  double wheel_angle_rad = 0;
+  double wheel_torque_nm = 0;      ///< driver hand torque
+  double torsion_bar_torque_nm = 0;
+  double rack_travel_m = 0;
+  double rack_force_n = 0;
+  double assist_torque_nm = 0;
+};
+
+struct DrivetrainReport {
+  double engine_speed_radps = 0;
+  double engine_torque_nm = 0;
+  std::int32_t gear = 0;
+};
+
+struct JointReport {
+  std::array<double, 3> force_n{};  ///< constraint force on the leading unit, road frame
+  double violation_m = 0;           ///< |g|
+  std::int32_t newton_iterations = 0;
+};
+
+/// Everything a tool may want to see of the model at one instant.
+struct ModelReport {
+  double time_s = 0;
+  std::int32_t unit_count = 0;
+  std::array<UnitReport, kMaxUnits> units{};
+  SteeringReport steering{};
+  DrivetrainReport drivetrain{};
+  std::array<double, 4> brake_pressure_pa{};  ///< FL, FR, RL, RR of the first unit
+  std::int32_t joint_count = 0;
+  std::array<JointReport, kMaxJoints> joints{};
+};
+
+}  // namespace rig::model

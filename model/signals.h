@@ -1,0 +1,133 @@
+#pragma once
+/// @file
+/// The only contract between the model and the outside world (io/, rig/): an enum-indexed set of
+/// named SI quantities with validity flags and a source. CAN mappings and LCM bind to these by
+/// name; the driver fills the inputs that no ECU provides.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace rig::model {
+
+/// Every model input and output. Names carry their unit; all values are SI.
+enum class Signal : std::uint16_t {
+  // ---- inputs ----
+  kSteeringWheelAngleCmd,   ///< driver steering wheel angle command [rad] (angle mode)
+  kSteeringWheelTorqueCmd,  ///< driver hand torque on the steering wheel [N m] (torque mode)
+  kAssistTorque,            ///< power-assist (EPS motor) torque on the pinion [N m]
+  kThrottlePedal,           ///< accelerator pedal position [0..1]
+  kBrakePressureFront,      ///< brake circuit pressure, front axle(s) [Pa]
+  kBrakePressureRear,       ///< brake circuit pressure, rear axle(s) [Pa]
+  kGearRequest,             ///< requested gear: -1 reverse, 0 neutral, 1..n, 99 = automatic [-]
+  // ---- outputs ----
+  kVehicleSpeed,            ///< longitudinal speed of the (first) unit's CG [m/s]
+  kWheelSpeedFL,            ///< wheel spin rate, front left [rad/s]
+  kWheelSpeedFR,            ///< wheel spin rate, front right [rad/s]
+  kWheelSpeedRL,            ///< wheel spin rate, rear left [rad/s]
+  kWheelSpeedRR,            ///< wheel spin rate, rear right [rad/s]
+  kLongitudinalAccel,       ///< longitudinal acceleration in body axes [m/s^2]
+  kLateralAccel,            ///< lateral acceleration in body axes [m/s^2]
+  kYawRate,                 ///< yaw rate [rad/s]
+  kSteeringWheelAngle,      ///< measured steering wheel angle [rad]
+  kSteeringWheelSpeed,      ///< measured steering wheel speed [rad/s]
+  kTorsionBarTorque,        ///< torsion bar torque, what the assist senses [N m]
+  kRackPosition,            ///< rack travel [m]
+  kRackForce,               ///< sum of tie-rod forces on the rack [N]
+  kEngineSpeed,             ///< engine speed [rad/s]
+  kGear,                    ///< engaged gear [-]
+  kBrakePressureFL,         ///< effective wheel brake pressure, front left [Pa]
+  kBrakePressureFR,         ///< effective wheel brake pressure, front right [Pa]
+  kBrakePressureRL,         ///< effective wheel brake pressure, rear left [Pa]
+  kBrakePressureRR,         ///< effective wheel brake pressure, rear right [Pa]
+  kPositionX,               ///< CG position x in the road frame [m]
+  kPositionY,               ///< CG position y in the road frame [m]
+  kHeading,                 ///< yaw angle [rad]
+  kCount
+};
+
+inline constexpr std::size_t kSignalCount = static_cast<std::size_t>(Signal::kCount);
+inline constexpr Signal kFirstOutput = Signal::kVehicleSpeed;
+
+/// Where an input value comes from. Set once from configuration (routing is config, not code).
+enum class SignalSource : std::uint8_t { kModel, kDriver, kCan };
+
+/// Static description of one signal.
+struct SignalInfo {
+  Signal id;
+  std::string_view name;  ///< snake_case with unit suffix, used by CAN mapping and LCM
+  std::string_view unit;
+  bool is_input;
+};
+
+inline constexpr std::array<SignalInfo, kSignalCount> kSignalTable{{
+    {Signal::kSteeringWheelAngleCmd, "steering_wheel_angle_cmd_rad", "rad", true},
+    {Signal::kSteeringWheelTorqueCmd, "steering_wheel_torque_cmd_nm", "N m", true},
+    {Signal::kAssistTorque, "assist_torque_nm", "N m", true},
+    {Signal::kThrottlePedal, "throttle_pedal", "1", true},
+    {Signal::kBrakePressureFront, "brake_pressure_front_pa", "Pa", true},
+    {Signal::kBrakePressureRear, "brake_pressure_rear_pa", "Pa", true},
+    {Signal::kGearRequest, "gear_request", "1", true},
+    {Signal::kVehicleSpeed, "vehicle_speed_mps", "m/s", false},
+    {Signal::kWheelSpeedFL, "wheel_speed_fl_radps", "rad/s", false},
+    {Signal::kWheelSpeedFR, "wheel_speed_fr_radps", "rad/s", false},
+    {Signal::kWheelSpeedRL, "wheel_speed_rl_radps", "rad/s", false},
+    {Signal::kWheelSpeedRR, "wheel_speed_rr_radps", "rad/s", false},
+    {Signal::kLongitudinalAccel, "longitudinal_accel_mps2", "m/s^2", false},
+    {Signal::kLateralAccel, "lateral_accel_mps2", "m/s^2", false},
+    {Signal::kYawRate, "yaw_rate_radps", "rad/s", false},
+    {Signal::kSteeringWheelAngle, "steering_wheel_angle_rad", "rad", false},
+    {Signal::kSteeringWheelSpeed, "steering_wheel_speed_radps", "rad/s", false},
+    {Signal::kTorsionBarTorque, "torsion_bar_torque_nm", "N m", false},
+    {Signal::kRackPosition, "rack_position_m", "m", false},
+    {Signal::kRackForce, "rack_force_n", "N", false},
+    {Signal::kEngineSpeed, "engine_speed_radps", "rad/s", false},
+    {Signal::kGear, "gear", "1", false},
+    {Signal::kBrakePressureFL, "brake_pressure_fl_pa", "Pa", false},
+    {Signal::kBrakePressureFR, "brake_pressure_fr_pa", "Pa", false},
+    {Signal::kBrakePressureRL, "brake_pressure_rl_pa", "Pa", false},
+    {Signal::kBrakePressureRR, "brake_pressure_rr_pa", "Pa", false},
+    {Signal::kPositionX, "position_x_m", "m", false},
+    {Signal::kPositionY, "position_y_m", "m", false},
+    {Signal::kHeading, "heading_rad", "rad", false},
+}};
+
+constexpr std::size_t index(Signal s) { return static_cast<std::size_t>(s); }
+constexpr const SignalInfo& info(Signal s) { return kSignalTable[index(s)]; }
+
+/// Looks a signal up by its name; std::nullopt if there is none (load time only).
+constexpr std::optional<Signal> signal_by_name(std::string_view name) {
+  for (const auto& entry : kSignalTable) {
+    if (entry.name == name) return entry.id;
+  }
+  return std::nullopt;
+}
+
+/// The values of all signals, their validity and (for inputs) their source. Plain data: copied
+/// by value into snapshots, never allocates.
+struct Signals {
+  std::array<double, kSignalCount> value{};
+  std::array<bool, kSignalCount> valid{};
+  std::array<SignalSource, kSignalCount> source{};
+
+  double& operator[](Signal s) { return value[index(s)]; }
+  double operator[](Signal s) const { return value[index(s)]; }
+  void set(Signal s, double v, bool is_valid = true) {
+    value[index(s)] = v;
+    valid[index(s)] = is_valid;
+  }
+};
+
+static_assert(
+    [] {
+      for (std::size_t i = 0; i < kSignalCount; ++i) {
+        if (index(kSignalTable[i].id) != i) return false;
+        if (kSignalTable[i].is_input != (i < index(kFirstOutput))) return false;
+      }
+      return true;
+    }(),
+    "kSignalTable must list every Signal in enum order");
+
+}  // namespace rig::model
