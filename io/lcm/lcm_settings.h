@@ -1,0 +1,34 @@
+#pragma once
+/// @file
+/// Settings of the LCM publisher and log writer: the optional [lcm] section of the rig config.
+
+#include <string>
+
+#include "io/config/strict_table.h"
+
+namespace rig::io {
+
+/// Default LCM URL: UDP multicast that stays on the host (ttl=0) unless the user opens it.
+inline constexpr const char* kDefaultLcmUrl = "udpm://239.255.76.67:7667?ttl=0";
+
+struct LcmSettings {
+  std::string url = kDefaultLcmUrl;
+  /// Prepended to every channel name so that several rigs can share a network ("RIG2_").
+  std::string channel_prefix;
+  /// Publication rates; 0 disables a channel. A rate at or above the loop rate means every
+  /// snapshot. The loop rate is divided by an integer, so e.g. 300 Hz at 1 kHz gives 333 Hz.
+  double state_rate_hz = 1000.0;
+  double status_rate_hz = 10.0;
+  double signals_rate_hz = 100.0;
+
+  [[nodiscard]] std::string state_channel() const { return channel_prefix + "RIG_STATE"; }
+  [[nodiscard]] std::string status_channel() const { return channel_prefix + "RIG_STATUS"; }
+  [[nodiscard]] std::string signals_channel() const { return channel_prefix + "RIG_SIGNALS"; }
+};
+
+/// Reads the [lcm] table (keys url, channel_prefix, state_rate_hz, status_rate_hz,
+/// signals_rate_hz; all optional) and rejects unknown keys (calls finish()). Throws ConfigError
+/// with `file:line` on bad values.
+LcmSettings read_lcm_settings(StrictTable& lcm_table);
+
+}  // namespace rig::io
