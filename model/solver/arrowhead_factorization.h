@@ -1,0 +1,70 @@
+#pragma once
+/// @file
+/// Block-sparse factorization of the modified mass matrix M_VI with the zero blocks of
+/// eqs. (30-31): a "body" block B coupled to several "leaf" blocks (front axle, rear axle, more
+/// axles of a truck) which are not coupled to each other:
+///
+///         [ A_BB  A_B1  A_B2 ... ]
+///     A = [ A_1B  A_11   0   ... ]        (A_ij = 0 for leaves i != j)
+///         [ A_2B   0    A_22 ... ]
+///
+/// Each leaf block is factorized alone, then the body's Schur complement
+/// S = A_BB - sum_i A_Bi A_ii^-1 A_iB. Cost: sum of the small cubes plus n_B^3 instead of
+/// (n_B + sum n_i)^3. All storage is sized in the constructor; compute() and solve() never
+/// allocate.
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+namespace rig::model::solver {
+
+/// Partition of the speeds: the body block first, then the leaf blocks in order.
+struct ArrowheadPartition {
+  Eigen::Index body_size = 0;
+  std::vector<Eigen::Index> leaf_sizes;  ///< one entry per leaf (axle)
+  [[nodiscard]] Eigen::Index total_size() const noexcept;
+};
+
+/// LU of an arrowhead block matrix (see file comment). Entries of the zero blocks are ignored,
+/// whatever they hold.
+class ArrowheadFactorization {
+ public:
+  using Matrix = Eigen::MatrixXd;
+
+  explicit ArrowheadFactorization(const ArrowheadPartition& partition);
+  /// For MechanicalStepper<Eigen::Dynamic, ArrowheadFactorization>: the size is implied by the
+  /// partition given at construction, so this constructor is not offered.
+  explicit ArrowheadFactorization(Eigen::Index size) = delete;
+
+  [[nodiscard]] const ArrowheadPartition& partition() const noexcept { return partition_; }
+
+  /// Factorizes a (total_size x total_size).
+  void compute(const Matrix& a) noexcept;
+
+  /// x = A^-1 b, column by column (b, x: total_size x any columns; they must not alias).
+  template <typename Rhs, typename Dst>
+  void solve(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dst>& x) const noexcept {
+    for (Eigen::Index c = 0; c < b.cols(); ++c) {
+      rhs_ = b.col(c);
+      solve_column();
+      x.col(c) = sol_;
+    }
+  }
+
+ private:
+  void solve_column() const noexcept;
+
+  ArrowheadPartition partition_;
+  std::vector<Eigen::Index> leaf_offsets_;
+  std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> leaf_lu_;
+  std::vector<Eigen::MatrixXd> leaf_coupling_;  ///< A_iB
+  std::vector<Eigen::MatrixXd> body_coupling_;  ///< A_Bi
+  std::vector<Eigen::MatrixXd> leaf_solved_;    ///< A_ii^-1 A_iB
+  Eigen::MatrixXd schur_;                       ///< S
+  Eigen::PartialPivLU<Eigen::MatrixXd> schur_lu_;
+  mutable Eigen::VectorXd rhs_, sol_, body_rhs_, leaf_tmp_;
+};
+
+}  // namespace rig::model::solver

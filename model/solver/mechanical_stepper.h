@@ -1,0 +1,131 @@
+#pragma once
+/// @file
+/// Eq. (8) for one mechanical block (subsystem or framework):
+///   M_VI = M - h dq/dz - h^2 dq/dy K^-1                       (modified mass matrix)
+///   z(k+1) = z(k) + h M_VI^-1 q(y(k) + h K^-1 z(k), z(k), ...)
+///   y(k+1) = y(k) + h K^-1 z(k+1)
+/// M and K^-1 are frozen at y(k); q and its Jacobians are taken at the predicted coordinates.
+
+#include <utility>
+
+#include <Eigen/Core>
+
+#include "model/solver/couplable_system.h"
+#include "model/solver/dense_factorization.h"
+#include "model/solver/finite_difference.h"
+#include "model/solver/mechanical_block.h"
+#include "model/solver/stage.h"
+
+namespace rig::model::solver {
+
+/// Advances one mechanical block; as a CouplableSystem it exposes the two phases of the step for
+/// constraint coupling (eqs. 45-46). Factorization: DenseFactorization<N> (default) or, for
+/// N = Eigen::Dynamic, ArrowheadFactorization (zero blocks of eqs. 30-31). Workspaces are sized
+/// in the constructor; advance(), begin_step() and finish_step() never allocate.
+template <int N, typename Factorization = DenseFactorization<N>>
+class MechanicalStepper final : public Stage, public CouplableSystem {
+ public:
+  using Vector = typename MechanicalBlock<N>::Vector;
+  using Matrix = typename MechanicalBlock<N>::Matrix;
+
+  /// Dense factorization (or any factorization constructible from the size).
+  explicit MechanicalStepper(MechanicalBlock<N>& block,
+                             JacobianMode mode = JacobianMode::kAnalyticOrFiniteDifference)
+      : MechanicalStepper(block, Factorization(block.size()), mode) {}
+
+  /// With a prepared factorization object (e.g. ArrowheadFactorization with its partition).
+  MechanicalStepper(MechanicalBlock<N>& block, Factorization factorization,
+                    JacobianMode mode = JacobianMode::kAnalyticOrFiniteDifference)
+      : block_(block),
+        mode_(mode),
+        n_(block.size()),
+        k_inv_(n_, n_),
+        m_(n_, n_),
+        dq_dy_(n_, n_),
+        dq_dz_(n_, n_),
+        m_vi_(n_, n_),
+        y_pred_(n_),
+        q_(n_),
+        z_u_(n_),
+        work_y_(n_),
+        work_z_(n_),
+        q1_(n_),
+        q2_(n_),
+        factorization_(std::move(factorization)) {
+    dq_dy_.setZero();
+    dq_dz_.setZero();
+  }
+
+  // ---- Stage ----
+  void advance(double h) noexcept override {
+    begin_step(h);
+    finish_step(h);
+  }
+
+  // ---- CouplableSystem ----
+  [[nodiscard]] Eigen::Index coordinate_size() const noexcept override { return n_; }
+
+  void begin_step(double h) noexcept override {
+    const Vector& y = block_.coordinates();
+    const Vector& z = block_.speeds();
+    block_.kinematics_inverse(y, k_inv_);
+    block_.mass_matrix(y, m_);
+    // eq. (6): q at the predicted coordinates y(k) + h K^-1 z(k)
+    y_pred_ = y;
+    y_pred_.noalias() += h * k_inv_ * z;
+    const bool analytic = mode_ == JacobianMode::kAnalyticOrFiniteDifference &&
+                          block_.force_jacobians(y_pred_, z, dq_dy_, dq_dz_);
+    if (analytic) {
+      block_.applied_forces(y_pred_, z, q_);
+    } else {
+      finite_difference_force_jacobians<N>(block_, y_pred_, z, dq_dy_, dq_dz_, work_y_, work_z_, q_,
+                                           q1_);
+    }
+    // eq. (8): modified mass matrix M_VI = M - h dq/dz - h^2 dq/dy K^-1
+    m_vi_ = m_;
+    m_vi_.noalias() -= h * dq_dz_;
+    m_vi_.noalias() -= (h * h) * dq_dy_ * k_inv_;
+    factorization_.compute(m_vi_);
+    factorization_.solve(q_, z_u_);
+  }
+
+  [[nodiscard]] ConstVectorRef coordinates() const noexcept override {
+    return block_.coordinates();
+  }
+  [[nodiscard]] ConstVectorRef speeds() const noexcept override { return block_.speeds(); }
+  [[nodiscard]] ConstMatrixRef kinematics_inverse() const noexcept override { return k_inv_; }
+  [[nodiscard]] ConstVectorRef unconstrained_rate() const noexcept override { return z_u_; }
+
+  void solve_mass(ConstMatrixRef b, MatrixRef x) const noexcept override {
+    factorization_.solve(b, x);
+  }
+
+  void finish_step(double h, ConstVectorRef extra_rate) noexcept override {
+    Vector& z = block_.speeds();
+    z += h * (z_u_ + extra_rate);
+    block_.coordinates().noalias() += h * k_inv_ * z;  // eq. (8): y(k+1) = y(k) + h K^-1 z(k+1)
+  }
+  /// finish_step without constraint forces.
+  void finish_step(double h) noexcept {
+    Vector& z = block_.speeds();
+    z += h * z_u_;
+    block_.coordinates().noalias() += h * k_inv_ * z;
+  }
+
+  // ---- inspection (valid after begin_step) ----
+  [[nodiscard]] const Matrix& modified_mass_matrix() const noexcept { return m_vi_; }
+  [[nodiscard]] const Matrix& force_jacobian_y() const noexcept { return dq_dy_; }
+  [[nodiscard]] const Matrix& force_jacobian_z() const noexcept { return dq_dz_; }
+  [[nodiscard]] const Vector& applied_forces() const noexcept { return q_; }
+  [[nodiscard]] const Vector& predicted_coordinates() const noexcept { return y_pred_; }
+
+ private:
+  MechanicalBlock<N>& block_;
+  JacobianMode mode_;
+  Eigen::Index n_;
+  Matrix k_inv_, m_, dq_dy_, dq_dz_, m_vi_;
+  Vector y_pred_, q_, z_u_, work_y_, work_z_, q1_, q2_;
+  Factorization factorization_;
+};
+
+}  // namespace rig::model::solver
