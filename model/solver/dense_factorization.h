@@ -16,7 +16,7 @@ class DenseFactorization {
   using Matrix = Eigen::Matrix<double, N, N>;
 
   /// @param size rows of the matrix (must equal N when N is fixed).
-  explicit DenseFactorization(Eigen::Index size) : lu_(size) {}
+  explicit DenseFactorization(Eigen::Index size) : lu_(Matrix::Identity(size, size)) {}
 
   /// Factorizes a (copies it into the factorization's own storage).
   void compute(const Matrix& a) noexcept { lu_.compute(a); }

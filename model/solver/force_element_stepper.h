@@ -28,7 +28,14 @@ class ForceElementStepper final : public Stage {
         ds_(element.state_size()),
         work_(element.state_size()),
         f1_(element.state_size()),
-        lu_(element.state_size()) {}
+        lu_(element.state_size()) {
+    f_.setZero();
+    jac_.setZero();
+    a_.setZero();
+    ds_.setZero();
+    work_.setZero();
+    f1_.setZero();
+  }
 
   void advance(double h) noexcept override {
     Vector& s = element_.state();

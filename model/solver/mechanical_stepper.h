@@ -6,7 +6,7 @@
 ///   y(k+1) = y(k) + h K^-1 z(k+1)
 /// M and K^-1 are frozen at y(k); q and its Jacobians are taken at the predicted coordinates.
 
-#include <utility>
+#include <type_traits>
 
 #include <Eigen/Core>
 
@@ -30,11 +30,14 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
 
   /// Dense factorization (or any factorization constructible from the size).
   explicit MechanicalStepper(MechanicalBlock<N>& block,
-                             JacobianMode mode = JacobianMode::kAnalyticOrFiniteDifference)
-      : MechanicalStepper(block, Factorization(block.size()), mode) {}
+                             JacobianMode mode = JacobianMode::kAnalyticOrFiniteDifference) requires
+      std::is_constructible_v<Factorization, Eigen::Index>
+      : MechanicalStepper(block, block.size(), mode) {}
 
-  /// With a prepared factorization object (e.g. ArrowheadFactorization with its partition).
-  MechanicalStepper(MechanicalBlock<N>& block, Factorization factorization,
+  /// With the factorization built from init, e.g. ArrowheadFactorization from its
+  /// ArrowheadPartition (the zero blocks of eqs. 30-31).
+  template <typename FactorizationInit>
+  MechanicalStepper(MechanicalBlock<N>& block, const FactorizationInit& init,
                     JacobianMode mode = JacobianMode::kAnalyticOrFiniteDifference)
       : block_(block),
         mode_(mode),
@@ -51,9 +54,19 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
         work_z_(n_),
         q1_(n_),
         q2_(n_),
-        factorization_(std::move(factorization)) {
+        factorization_(init) {
+    k_inv_.setIdentity();
+    m_.setZero();
     dq_dy_.setZero();
     dq_dz_.setZero();
+    m_vi_.setZero();
+    y_pred_.setZero();
+    q_.setZero();
+    z_u_.setZero();
+    work_y_.setZero();
+    work_z_.setZero();
+    q1_.setZero();
+    q2_.setZero();
   }
 
   // ---- Stage ----
