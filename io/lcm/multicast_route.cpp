@@ -31,7 +31,8 @@ std::optional<MulticastAddress> parse_udpm_url(const std::string& url) {
 
 std::string multicast_route_advice() {
   return "Add a multicast route, e.g. for this host only: `sudo ip route add 224.0.0.0/4 dev lo` "
-         "(or `dev <interface>` to reach other machines on that network). "
+         "(and `sudo ip link set lo up` if lo is down; or `dev <interface>` to reach other "
+         "machines on that network). "
          "The rig runs on without LCM.";
 }
 
