@@ -16,7 +16,10 @@ class DenseFactorization {
   using Matrix = Eigen::Matrix<double, N, N>;
 
   /// @param size rows of the matrix (must equal N when N is fixed).
-  explicit DenseFactorization(Eigen::Index size) : lu_(Matrix::Identity(size, size)) {}
+  explicit DenseFactorization(Eigen::Index size)
+      : lu_(Matrix::Identity(size, size)),
+        column_in_(Vector::Zero(size)),
+        column_out_(Vector::Zero(size)) {}
 
   /// Factorizes a (copies it into the factorization's own storage).
   void compute(const Matrix& a) noexcept { lu_.compute(a); }
@@ -24,11 +27,18 @@ class DenseFactorization {
   /// x = A^-1 b, column by column; b and x may have any number of columns.
   template <typename Rhs, typename Dst>
   void solve(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dst>& x) const noexcept {
-    x.derived() = lu_.solve(b);
+    // Column by column through sized vectors: no temporaries for any column count.
+    for (Eigen::Index c = 0; c < b.cols(); ++c) {
+      column_in_ = b.col(c);
+      column_out_ = lu_.solve(column_in_);
+      x.col(c) = column_out_;
+    }
   }
 
  private:
+  using Vector = Eigen::Matrix<double, N, 1>;
   Eigen::PartialPivLU<Matrix> lu_;
+  mutable Vector column_in_, column_out_;
 };
 
 }  // namespace rig::model::solver

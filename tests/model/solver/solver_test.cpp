@@ -1,0 +1,314 @@
+// Tests of model/solver: eq. (8) against hand computations, the arrowhead factorization of
+// eqs. (30-31), finite-difference vs analytic Jacobians, the Newton criterion of the constraint
+// coupling (eqs. 45-50), and zero allocation per step.
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <Eigen/Dense>
+
+#include "model/examples/coupled_pendulums/coupled_pendulums.h"
+#include "model/examples/quarter_car/quarter_car.h"
+#include "model/solver/arrowhead_factorization.h"
+#include "model/solver/coupled_stepper.h"
+#include "model/solver/engine.h"
+#include "model/solver/finite_difference.h"
+#include "model/solver/force_element_stepper.h"
+#include "model/solver/mechanical_stepper.h"
+#include "tests/support/alloc_counter.h"
+
+namespace rig::model::solver {
+namespace {
+
+// A linear spring-damper oscillator: m v' = -k x - d v - c_s s, x' = v (K = I), coupled to a
+// linear force element s' = -a s + b v (a damper with its own state).
+struct LinearElement final : ForceElement<1> {
+  double a = 50.0, b = 2.0;
+  const Eigen::Matrix<double, 1, 1>* v = nullptr;
+  Vector s = Vector::Constant(0.1);
+  Eigen::Index state_size() const noexcept override { return 1; }
+  Vector& state() noexcept override { return s; }
+  void rate(const Vector& st, Vector& f) const noexcept override {
+    f(0) = -a * st(0) + b * (*v)(0);
+  }
+  bool rate_jacobian(const Vector&, Matrix& j) const noexcept override {
+    j(0, 0) = -a;
+    return true;
+  }
+};
+
+struct LinearOscillator final : MechanicalBlock<1> {
+  double m = 2.0, k = 800.0, d = 3.0, c_s = 10.0;
+  const Eigen::Matrix<double, 1, 1>* s = nullptr;
+  Vector y = Vector::Constant(0.05), z = Vector::Constant(-0.3);
+  Eigen::Index size() const noexcept override { return 1; }
+  Vector& coordinates() noexcept override { return y; }
+  Vector& speeds() noexcept override { return z; }
+  void mass_matrix(const Vector&, Matrix& mm) const noexcept override { mm(0, 0) = m; }
+  void applied_forces(const Vector& yy, const Vector& zz, Vector& q) const noexcept override {
+    q(0) = -k * yy(0) - d * zz(0) - c_s * (*s)(0);
+  }
+  bool force_jacobians(const Vector&, const Vector&, Matrix& dq_dy,
+                       Matrix& dq_dz) const noexcept override {
+    dq_dy(0, 0) = -k;
+    dq_dz(0, 0) = -d;
+    return true;
+  }
+};
+
+TEST(Engine, OneStepEqualsHandComputedEq8) {
+  LinearOscillator osc;
+  LinearElement el;
+  el.v = &osc.z;
+  osc.s = &el.s;
+  ForceElementStepper<1> fe(el);
+  MechanicalStepper<1> ms(osc);
+  Engine engine(ms);
+  engine.add_stage(fe);
+  const double h = 0.01;
+  const double s0 = el.s(0), x0 = osc.y(0), v0 = osc.z(0);
+  engine.step(h);
+  // eq. (8) by hand: s1 = s0 + h (-a s0 + b v0) / (1 + h a)
+  const double s1 = s0 + h * (-el.a * s0 + el.b * v0) / (1.0 + h * el.a);
+  // M_VI = m + h d + h^2 k; q at x0 + h v0 with the new s1
+  const double m_vi = osc.m + h * osc.d + h * h * osc.k;
+  const double q = -osc.k * (x0 + h * v0) - osc.d * v0 - osc.c_s * s1;
+  const double v1 = v0 + h * q / m_vi;
+  const double x1 = x0 + h * v1;
+  EXPECT_NEAR(el.s(0), s1, 1e-15);
+  EXPECT_NEAR(osc.z(0), v1, 1e-14);
+  EXPECT_NEAR(osc.y(0), x1, 1e-15);
+  EXPECT_NEAR(ms.modified_mass_matrix()(0, 0), m_vi, 1e-12);
+}
+
+TEST(Engine, FiniteDifferenceModeMatchesAnalytic) {
+  LinearOscillator a, b;
+  LinearElement ea, eb;
+  ea.v = &a.z;
+  a.s = &ea.s;
+  eb.v = &b.z;
+  b.s = &eb.s;
+  ForceElementStepper<1> fa(ea), fb(eb, JacobianMode::kFiniteDifference);
+  MechanicalStepper<1> ma(a), mb(b, JacobianMode::kFiniteDifference);
+  for (int i = 0; i < 100; ++i) {
+    fa.advance(1e-3);
+    ma.advance(1e-3);
+    fb.advance(1e-3);
+    mb.advance(1e-3);
+  }
+  EXPECT_NEAR(a.y(0), b.y(0), 1e-9);
+  EXPECT_NEAR(a.z(0), b.z(0), 1e-7);
+  EXPECT_NEAR(ea.s(0), eb.s(0), 1e-9);
+}
+
+TEST(Engine, StiffSpringStableAtLargeStep) {
+  // k/m = 1e8 1/s^2: explicit Euler would explode at h = 1e-2 (|1 + i h w| > 1); the modified
+  // implicit Euler decays.
+  LinearOscillator osc;
+  osc.k = 2e8;
+  osc.c_s = 0.0;
+  Eigen::Matrix<double, 1, 1> zero_s = Eigen::Matrix<double, 1, 1>::Zero();
+  osc.s = &zero_s;
+  MechanicalStepper<1> ms(osc);
+  const double e0 = 0.5 * osc.k * osc.y(0) * osc.y(0) + 0.5 * osc.m * osc.z(0) * osc.z(0);
+  for (int i = 0; i < 1000; ++i) ms.advance(1e-2);
+  const double e1 = 0.5 * osc.k * osc.y(0) * osc.y(0) + 0.5 * osc.m * osc.z(0) * osc.z(0);
+  EXPECT_LT(e1, 1e-6 * e0);
+}
+
+// ---- arrowhead factorization (eqs. 30-31) ----
+Eigen::MatrixXd random_arrowhead(const ArrowheadPartition& p, unsigned seed) {
+  std::srand(seed);
+  const Eigen::Index n = p.total_size();
+  Eigen::MatrixXd a = Eigen::MatrixXd::Random(n, n);
+  a.diagonal().array() += static_cast<double>(n);  // well conditioned
+  Eigen::Index oi = p.body_size;
+  for (std::size_t i = 0; i < p.leaf_sizes.size(); ++i) {
+    Eigen::Index oj = p.body_size;
+    for (std::size_t j = 0; j < p.leaf_sizes.size(); ++j) {
+      if (i != j) a.block(oi, oj, p.leaf_sizes[i], p.leaf_sizes[j]).setZero();
+      oj += p.leaf_sizes[j];
+    }
+    oi += p.leaf_sizes[i];
+  }
+  return a;
+}
+
+TEST(ArrowheadFactorization, SolvesLikeDenseLu) {
+  const ArrowheadPartition p{6, {5, 5, 4}};  // body, front axle, rear axle, third axle
+  const Eigen::MatrixXd a = random_arrowhead(p, 7);
+  ArrowheadFactorization f(p);
+  f.compute(a);
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(p.total_size(), 3);
+  Eigen::MatrixXd x(p.total_size(), 3);
+  f.solve(b, x);
+  const Eigen::MatrixXd x_dense = a.partialPivLu().solve(b);
+  EXPECT_LT((x - x_dense).norm(), 1e-12 * x_dense.norm());
+  EXPECT_LT((a * x - b).norm(), 1e-12 * b.norm());
+}
+
+TEST(ArrowheadFactorization, IgnoresEntriesOfTheZeroBlocks) {
+  const ArrowheadPartition p{3, {2, 2}};
+  Eigen::MatrixXd a = random_arrowhead(p, 11);
+  ArrowheadFactorization f(p);
+  f.compute(a);
+  const Eigen::VectorXd b = Eigen::VectorXd::Random(7);
+  Eigen::VectorXd x1(7), x2(7);
+  f.solve(b, x1);
+  a.block(3, 5, 2, 2).setConstant(99.0);  // front-rear block: not part of the structure
+  f.compute(a);
+  f.solve(b, x2);
+  EXPECT_EQ((x1 - x2).norm(), 0.0);
+}
+
+// A 7-DOF block with arrowhead structure: body (3) + two "axles" (2 each), springs to ground
+// and body-axle springs; stepped with the arrowhead factorization vs dense.
+struct ArrowBlock final : MechanicalBlock<Eigen::Dynamic> {
+  Vector y = Vector::LinSpaced(7, 0.01, 0.07), z = Vector::Zero(7);
+  Matrix stiffness = Matrix::Zero(7, 7);
+  ArrowBlock() {
+    const ArrowheadPartition p{3, {2, 2}};
+    stiffness = -random_arrowhead(p, 3).cwiseAbs() * 1e4;
+    stiffness = 0.5 * (stiffness + stiffness.transpose()).eval();
+  }
+  Eigen::Index size() const noexcept override { return 7; }
+  Vector& coordinates() noexcept override { return y; }
+  Vector& speeds() noexcept override { return z; }
+  void mass_matrix(const Vector&, Matrix& m) const noexcept override {
+    m.setIdentity();
+    m.diagonal() *= 3.0;
+  }
+  void applied_forces(const Vector& yy, const Vector& zz, Vector& q) const noexcept override {
+    q.noalias() = stiffness * yy;
+    q -= 5.0 * zz;
+  }
+  bool force_jacobians(const Vector&, const Vector&, Matrix& dq_dy,
+                       Matrix& dq_dz) const noexcept override {
+    dq_dy = stiffness;
+    dq_dz.setIdentity();
+    dq_dz *= -5.0;
+    return true;
+  }
+};
+
+TEST(MechanicalStepper, ArrowheadAndDenseGiveTheSameSteps) {
+  ArrowBlock b1, b2;
+  MechanicalStepper<Eigen::Dynamic> dense(b1);
+  MechanicalStepper<Eigen::Dynamic, ArrowheadFactorization> arrow(b2,
+                                                                  ArrowheadPartition{3, {2, 2}});
+  for (int i = 0; i < 200; ++i) {
+    dense.advance(1e-3);
+    arrow.advance(1e-3);
+  }
+  EXPECT_LT((b1.y - b2.y).norm(), 1e-12);
+  EXPECT_GT(b1.y.norm(), 1e-6);  // it moved
+}
+
+// ---- finite differences vs analytic Jacobians of the paper blocks ----
+TEST(Jacobians, PendulumAnalyticMatchesFiniteDifference) {
+  examples::Pendulum p(10.0, 1.0, 9.81, 0.7);
+  Eigen::Matrix<double, 1, 1> y, z, dy_a, dz_a, dy_f, dz_f, w1, w2, q0, q1;
+  y << 0.7;
+  z << 0.4;
+  ASSERT_TRUE(p.force_jacobians(y, z, dy_a, dz_a));
+  finite_difference_force_jacobians<1>(p, y, z, dy_f, dz_f, w1, w2, q0, q1);
+  EXPECT_NEAR(dy_a(0, 0), dy_f(0, 0), 1e-6 * std::abs(dy_a(0, 0)));
+  EXPECT_NEAR(dz_a(0, 0), dz_f(0, 0), 1e-6);
+}
+
+TEST(Jacobians, QuarterCarBodyAndTireAnalyticMatchFiniteDifference) {
+  const examples::QuarterCarParams params;
+  const examples::QuarterCarTire tire(3900.0, params.wheel_radius_m);
+  for (const auto& [v, w, x_e] :
+       {std::tuple{10.0, 34.0, 0.004}, std::tuple{0.3, 0.5, -0.002}, std::tuple{5.0, 18.0, 0.0}}) {
+    Eigen::Matrix<double, 1, 1> s;
+    s << x_e;
+    Eigen::Vector2d y(1.0, 0.0), z(v, w);
+    examples::QuarterCarBody body(params, tire, y, z, s);
+    Eigen::Matrix2d dy_a, dz_a, dy_f, dz_f;
+    Eigen::Vector2d w1, w2, q0, q1;
+    ASSERT_TRUE(body.force_jacobians(y, z, dy_a, dz_a));
+    finite_difference_force_jacobians<2>(body, y, z, dy_f, dz_f, w1, w2, q0, q1);
+    EXPECT_LT((dz_a - dz_f).norm(), 1e-4 * dz_a.norm()) << "v=" << v << " w=" << w;
+    EXPECT_LT((dy_a - dy_f).norm(), 1e-6);
+
+    examples::TireDeflectionElement el(tire, s, z);
+    Eigen::Matrix<double, 1, 1> j_a, j_f, ws, f0, f1;
+    ASSERT_TRUE(el.rate_jacobian(s, j_a));
+    finite_difference_rate_jacobian<1>(el, s, j_f, ws, f0, f1);
+    EXPECT_NEAR(j_a(0, 0), j_f(0, 0), 1e-4 * std::abs(j_a(0, 0)));
+  }
+}
+
+// ---- constraint coupling: the Newton criterion ----
+// At h = 1 ms a position-only tolerance of 0.1 mm accepts the warm start (the previous lambda):
+// |g| stays below the tolerance while the rod force wanders far off (measured: errors of
+// ~10x the peak force). The default
+// criterion also demands a small relative lambda increment and tracks the force.
+TEST(ConstraintCoupling, PositionOnlyCriterionLeavesLambdaWrong) {
+  NewtonParams loose;
+  loose.criterion = NewtonCriterion::kPosition;
+  loose.position_tolerance = 1e-4;  // 0.1 mm
+  examples::CoupledPendulums tight_run;
+  examples::CoupledPendulums loose_run({}, loose);
+  double max_force_error = 0, max_g_loose = 0, peak = 0;
+  int loose_iterations = 0;
+  for (int i = 0; i < 1000; ++i) {
+    tight_run.step(1e-3);
+    loose_iterations += loose_run.step(1e-3).iterations;
+    max_force_error =
+        std::max(max_force_error, std::abs(tight_run.rod_force_n() - loose_run.rod_force_n()));
+    max_g_loose = std::max(max_g_loose, std::abs(loose_run.constraint_violation_m()));
+    peak = std::max(peak, std::abs(tight_run.rod_force_n()));
+  }
+  EXPECT_LT(max_g_loose, 1e-4);            // |g| looks fine...
+  EXPECT_GT(max_force_error, 0.3 * peak);  // ...but lambda is badly wrong
+  std::printf(
+      "position-only criterion (0.1 mm): max rod force error %.1f N (peak %.1f N), "
+      "%d Newton iterations in 1000 steps\n",
+      max_force_error, peak, loose_iterations);
+}
+
+TEST(ConstraintCoupling, ReportsIterationsResidualAndCap) {
+  NewtonParams capped = examples::default_pendulum_newton_params();
+  capped.max_iterations = 1;
+  examples::CoupledPendulums p({}, capped);
+  const NewtonReport r = p.step(0.05);
+  EXPECT_EQ(r.iterations, 1);
+  EXPECT_FALSE(r.converged);
+  EXPECT_GT(r.residual, 0.0);
+  examples::CoupledPendulums q;
+  const NewtonReport r2 = q.step(0.05);
+  EXPECT_TRUE(r2.converged);
+  EXPECT_LE(r2.residual, 1e-7);
+  EXPECT_NEAR(std::abs(q.constraint_violation_m()), r2.residual, 1e-12);
+}
+
+// ---- no allocation per step ----
+TEST(NoAllocation, SolverStepsAllocateNothing) {
+  examples::CoupledPendulums pendulums;
+  examples::QuarterCar car;
+  ArrowBlock block;
+  MechanicalStepper<Eigen::Dynamic, ArrowheadFactorization> arrow(block,
+                                                                  ArrowheadPartition{3, {2, 2}});
+  LinearOscillator osc;
+  LinearElement el;
+  el.v = &osc.z;
+  osc.s = &el.s;
+  ForceElementStepper<1> fe(el, JacobianMode::kFiniteDifference);
+  MechanicalStepper<1> ms(osc, JacobianMode::kFiniteDifference);
+  Engine engine(ms);
+  engine.add_stage(fe);
+  const test::AllocationCounter counter;
+  Eigen::internal::set_is_malloc_allowed(false);
+  for (int i = 0; i < 2000; ++i) {
+    pendulums.step(1e-3);
+    car.step(1e-3, examples::paper_maneuver_inputs(i * 1e-3 * 10));
+    arrow.advance(1e-3);
+    engine.step(1e-3);
+  }
+  Eigen::internal::set_is_malloc_allowed(true);
+  EXPECT_EQ(counter.count(), 0u);
+}
+
+}  // namespace
+}  // namespace rig::model::solver
