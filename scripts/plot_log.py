@@ -1,0 +1,189 @@
+#!/usr/bin/python3
+"""Figures of a rig run from the CSVs of rig-log2csv (called as `scripts/plot log CSVDIR [OUTDIR]`).
+
+Reads CSVDIR/*RIG_STATE.csv (any channel prefix), *RIG_STATUS.csv and *RIG_SIGNALS.csv, writes
+PNGs to OUTDIR (default CSVDIR) and prints the path of each:
+  trajectory.png    CG path of every unit in the road frame
+  speed_accel.png   speed and body accelerations of the first unit
+  steering.png      steering wheel angle; hand, torsion bar and assist torques
+  wheel_slips.png   longitudinal and lateral slip of every wheel
+  lateness.png      histogram of loop lateness with the deadline (one period) marked
+  misses.png        timeline of deadline misses
+"""
+import csv
+import math
+import pathlib
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def find(csv_dir, channel):
+    """The CSV of `channel`, with or without a channel prefix; None if absent."""
+    exact = csv_dir / f"{channel}.csv"
+    if exact.exists():
+        return exact
+    matches = sorted(csv_dir.glob(f"*{channel}.csv"))
+    return matches[0] if matches else None
+
+
+def read_columns(path):
+    """Columns of a CSV as lists of floats (cells that are not numbers become NaN)."""
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        header = next(reader)
+        columns = {name: [] for name in header}
+        for row in reader:
+            for name, cell in zip(header, row):
+                try:
+                    columns[name].append(float(cell))
+                except ValueError:
+                    columns[name].append(math.nan)
+    return columns
+
+
+def indices(columns, prefix, suffix):
+    """The i of every column named prefix<i>suffix, sorted."""
+    found = []
+    for name in columns:
+        if name.startswith(prefix) and name.endswith(suffix):
+            middle = name[len(prefix):len(name) - len(suffix)]
+            if middle.isdigit():
+                found.append(int(middle))
+    return sorted(found)
+
+
+def save(fig, out_dir, name, written):
+    path = out_dir / name
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    written.append(path)
+
+
+def plot_state(state, out_dir, written):
+    t = state["sim_time_s"]
+    fig, ax = plt.subplots(figsize=(7, 6))
+    for u in indices(state, "unit", "_x_m"):
+        ax.plot(state[f"unit{u}_x_m"], state[f"unit{u}_y_m"], label=f"unit {u}")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.set_title("Trajectory (CG, road frame)")
+    ax.axis("equal")
+    ax.grid(True)
+    ax.legend()
+    save(fig, out_dir, "trajectory.png", written)
+
+    fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8, 6))
+    speed = [math.hypot(vx, vy) for vx, vy in zip(state["unit0_vx_mps"], state["unit0_vy_mps"])]
+    ax1.plot(t, speed)
+    ax1.set_ylabel("speed [m/s]")
+    ax1.set_title("Speed and accelerations (unit 0, body axes)")
+    ax1.grid(True)
+    ax2.plot(t, state["unit0_ax_mps2"], label="a_x longitudinal")
+    ax2.plot(t, state["unit0_ay_mps2"], label="a_y lateral")
+    ax2.set_xlabel("simulated time [s]")
+    ax2.set_ylabel("acceleration [m/s²]")
+    ax2.grid(True)
+    ax2.legend()
+    save(fig, out_dir, "speed_accel.png", written)
+
+    fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8, 6))
+    ax1.plot(t, [math.degrees(a) for a in state["steering_wheel_angle_rad"]])
+    ax1.set_ylabel("steering wheel angle [deg]")
+    ax1.set_title("Steering")
+    ax1.grid(True)
+    for column, label in (("steering_wheel_torque_nm", "hand torque"),
+                          ("torsion_bar_torque_nm", "torsion bar torque"),
+                          ("assist_torque_nm", "assist torque")):
+        ax2.plot(t, state[column], label=label)
+    ax2.set_xlabel("simulated time [s]")
+    ax2.set_ylabel("torque [N m]")
+    ax2.grid(True)
+    ax2.legend()
+    save(fig, out_dir, "steering.png", written)
+
+    fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8, 6))
+    for w in indices(state, "wheel", "_slip_x"):
+        unit = int(state[f"wheel{w}_unit"][0]) if f"wheel{w}_unit" in state else 0
+        ax1.plot(t, state[f"wheel{w}_slip_x"], label=f"wheel {w} (unit {unit})")
+        ax2.plot(t, state[f"wheel{w}_slip_y"], label=f"wheel {w} (unit {unit})")
+    ax1.set_ylabel("longitudinal slip [-]")
+    ax1.set_title("Wheel slips")
+    ax1.grid(True)
+    ax1.legend(fontsize="small", ncol=2)
+    ax2.set_ylabel("lateral slip [-]")
+    ax2.set_xlabel("simulated time [s]")
+    ax2.grid(True)
+    save(fig, out_dir, "wheel_slips.png", written)
+
+
+def plot_timing(state, status, out_dir, written):
+    period_s = 0.001
+    if status and status["period_s"]:
+        period_s = status["period_s"][0]
+    period_us = period_s * 1e6
+
+    fig, ax = plt.subplots(figsize=(8, 5))
+    lateness_us = [v / 1e3 for v in state["lateness_ns"]]
+    end_us = [(a + b) / 1e3 for a, b in zip(state["lateness_ns"], state["compute_ns"])]
+    top = max(max(end_us, default=0.0), period_us) * 1.05
+    bins = [top * i / 100 for i in range(101)]
+    ax.hist(lateness_us, bins=bins, log=True, alpha=0.7, label="wake-up lateness")
+    ax.hist(end_us, bins=bins, log=True, alpha=0.5, label="lateness + compute (work end)")
+    ax.axvline(period_us, color="red", linestyle="--", label=f"deadline: next cycle ({period_us:g} µs)")
+    ax.set_xlabel("time after the cycle's deadline [µs]")
+    ax.set_ylabel("cycles")
+    ax.set_title(f"Loop lateness ({len(lateness_us)} cycles)")
+    ax.grid(True)
+    ax.legend()
+    save(fig, out_dir, "lateness.png", written)
+
+    fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8, 5))
+    t = state["sim_time_s"]
+    miss_t = [ti for ti, m in zip(t, state["deadline_miss"]) if m == 1]
+    ax1.eventplot([miss_t], colors="red", lineoffsets=0.5, linelengths=0.8)
+    ax1.set_yticks([])
+    ax1.set_title(f"Deadline misses ({len(miss_t)} among the cycles published)")
+    ax1.grid(True, axis="x")
+    if status:
+        ax2.step(status["sim_time_s"], status["deadline_misses"], where="post", label="total")
+        ax2.step(status["sim_time_s"], status["window_misses"], where="post",
+                 label="in the last second")
+        ax2.legend()
+    ax2.set_xlabel("simulated time [s]")
+    ax2.set_ylabel("misses")
+    ax2.grid(True)
+    save(fig, out_dir, "misses.png", written)
+
+
+def main(argv):
+    if len(argv) not in (2, 3):
+        print("usage: scripts/plot log CSVDIR [OUTDIR]", file=sys.stderr)
+        return 2
+    csv_dir = pathlib.Path(argv[1])
+    out_dir = pathlib.Path(argv[2]) if len(argv) == 3 else csv_dir
+    out_dir.mkdir(parents=True, exist_ok=True)
+    state_csv = find(csv_dir, "RIG_STATE")
+    if state_csv is None:
+        print(f"plot log: no RIG_STATE.csv in {csv_dir} (made by rig-log2csv?)", file=sys.stderr)
+        return 1
+    state = read_columns(state_csv)
+    if not state["sim_time_s"]:
+        print(f"plot log: {state_csv} has no rows", file=sys.stderr)
+        return 1
+    status_csv = find(csv_dir, "RIG_STATUS")
+    status = read_columns(status_csv) if status_csv else None
+    written = []
+    plot_state(state, out_dir, written)
+    plot_timing(state, status, out_dir, written)
+    for path in written:
+        print(path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
