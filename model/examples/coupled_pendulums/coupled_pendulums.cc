@@ -82,6 +82,14 @@ solver::NewtonReport CoupledPendulums::step(double h) noexcept {
   return report;
 }
 
+double CoupledPendulums::mechanical_energy_j() const noexcept {
+  const CoupledPendulumsParams& p = params_;
+  const double v1 = speed1_mps(), v2 = speed2_mps();
+  return 0.5 * p.mass1_kg * v1 * v1 + 0.5 * p.mass2_kg * v2 * v2 -
+         p.mass1_kg * p.gravity_mps2 * p.length1_m * std::cos(phi1_rad()) -
+         p.mass2_kg * p.gravity_mps2 * p.length2_m * std::cos(phi2_rad());
+}
+
 double CoupledPendulums::constraint_violation_m() const noexcept {
   return rod_geometry(params_, phi1_rad(), phi2_rad()).length_m - rod_length_m_;
 }

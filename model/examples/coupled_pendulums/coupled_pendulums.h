@@ -26,6 +26,11 @@ class CoupledPendulums {
   [[nodiscard]] double time_s() const noexcept { return time_s_; }
   [[nodiscard]] double phi1_rad() const noexcept { return pendulum1_.angle_rad(); }
   [[nodiscard]] double phi2_rad() const noexcept { return pendulum2_.angle_rad(); }
+  /// Generalized speeds v_i = a_i phi_i' [m/s].
+  [[nodiscard]] double speed1_mps() const noexcept { return pendulum1_.speed_mps(); }
+  [[nodiscard]] double speed2_mps() const noexcept { return pendulum2_.speed_mps(); }
+  /// Kinetic + potential energy (pivots at height 0) [J].
+  [[nodiscard]] double mechanical_energy_j() const noexcept;
   /// Rod force [N], tension positive (the multiplier is lambda = -tension: the generalized
   /// constraint force on v_i is (dl/dphi_i / a_i) lambda).
   [[nodiscard]] double rod_force_n() const noexcept { return -coupled_.multipliers()(0); }
