@@ -37,8 +37,7 @@ void LcmLogWriter::consume(const Snapshot& snapshot, std::uint64_t dropped_befor
   if (log_ == nullptr) return;
   EncodedMessage messages[3];
   const std::size_t n = encoder_.encode(snapshot, dropped_before, messages);
-  const std::int64_t utime =
-      start_utime_us_ + std::llround(snapshot.timing.sim_time_s * 1.0e6);
+  const std::int64_t utime = start_utime_us_ + std::llround(snapshot.timing.sim_time_s * 1.0e6);
   for (std::size_t i = 0; i < n; ++i) {
     const auto& m = messages[i];
     lcm_eventlog_event_t event{};

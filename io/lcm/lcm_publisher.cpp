@@ -57,8 +57,8 @@ void LcmPublisher::consume(const Snapshot& snapshot, std::uint64_t dropped_befor
       ++send_failures_;  // a full socket buffer: lose this message, keep going
       continue;
     }
-    const bool no_route = error == ENETUNREACH || error == EHOSTUNREACH || error == ENODEV ||
-                          error == EADDRNOTAVAIL;
+    const bool no_route =
+        error == ENETUNREACH || error == EHOSTUNREACH || error == ENODEV || error == EADDRNOTAVAIL;
     disable("rig: LCM disabled: publishing on " + *m.channel + " failed (" +
             (error != 0 ? std::strerror(error) : "unknown error") + "). " +
             (no_route ? multicast_route_advice() : "The rig runs on without LCM."));

@@ -22,8 +22,8 @@ LcmSettings read_lcm_settings(StrictTable& lcm_table) {
   LcmSettings settings;
   settings.url = lcm_table.string("url", settings.url);
   if (settings.url.find("://") == std::string::npos) {
-    throw lcm_table.error("url", "an LCM URL looks like provider://address, e.g. " +
-                                     std::string(kDefaultLcmUrl));
+    throw lcm_table.error(
+        "url", "an LCM URL looks like provider://address, e.g. " + std::string(kDefaultLcmUrl));
   }
   settings.channel_prefix = lcm_table.string("channel_prefix", "");
   if (!valid_channel_prefix(settings.channel_prefix)) {

@@ -58,10 +58,9 @@ void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg) {
 
   msg.num_wheels = static_cast<std::int32_t>(wheels);
   resize(msg.wheel_unit, wheels);
-  for (auto* v : {&msg.wheel_spin_radps, &msg.wheel_slip_x, &msg.wheel_slip_y,
-                  &msg.wheel_force_x_n, &msg.wheel_force_y_n, &msg.wheel_load_n, &msg.wheel_x_e_m,
-                  &msg.wheel_y_e_m, &msg.wheel_steer_rad, &msg.wheel_brake_torque_nm,
-                  &msg.wheel_drive_torque_nm}) {
+  for (auto* v : {&msg.wheel_spin_radps, &msg.wheel_slip_x, &msg.wheel_slip_y, &msg.wheel_force_x_n,
+                  &msg.wheel_force_y_n, &msg.wheel_load_n, &msg.wheel_x_e_m, &msg.wheel_y_e_m,
+                  &msg.wheel_steer_rad, &msg.wheel_brake_torque_nm, &msg.wheel_drive_torque_nm}) {
     resize(*v, wheels);
   }
   std::size_t k = 0;
@@ -105,8 +104,8 @@ void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg) {
   const std::int32_t joints = clamp_count(r.joint_count, model::kMaxJoints);
   const auto nj = static_cast<std::size_t>(joints);
   msg.num_joints = joints;
-  for (auto* v : {&msg.joint_force_x_n, &msg.joint_force_y_n, &msg.joint_force_z_n,
-                  &msg.joint_violation_m}) {
+  for (auto* v :
+       {&msg.joint_force_x_n, &msg.joint_force_y_n, &msg.joint_force_z_n, &msg.joint_violation_m}) {
     resize(*v, nj);
   }
   for (std::size_t j = 0; j < nj; ++j) {
@@ -142,9 +141,15 @@ void fill_signals(const Snapshot& snapshot, rig::signals_t& msg) {
     msg.value[i] = s.value[i];
     msg.valid[i] = s.valid[i] ? 1 : 0;
     switch (s.source[i]) {
-      case model::SignalSource::kModel: msg.source[i] = rig::signals_t::SOURCE_MODEL; break;
-      case model::SignalSource::kDriver: msg.source[i] = rig::signals_t::SOURCE_DRIVER; break;
-      case model::SignalSource::kCan: msg.source[i] = rig::signals_t::SOURCE_CAN; break;
+      case model::SignalSource::kModel:
+        msg.source[i] = rig::signals_t::SOURCE_MODEL;
+        break;
+      case model::SignalSource::kDriver:
+        msg.source[i] = rig::signals_t::SOURCE_DRIVER;
+        break;
+      case model::SignalSource::kCan:
+        msg.source[i] = rig::signals_t::SOURCE_CAN;
+        break;
     }
   }
 }
@@ -190,9 +195,15 @@ void fill_status(const Snapshot& snapshot, const RunInfo& info, const StatusTota
 
   const auto& c = snapshot.can;
   switch (c.bus_state) {
-    case BusState::kDisabled: msg.bus_state = rig::rig_status_t::BUS_DISABLED; break;
-    case BusState::kUp: msg.bus_state = rig::rig_status_t::BUS_UP; break;
-    case BusState::kDown: msg.bus_state = rig::rig_status_t::BUS_DOWN; break;
+    case BusState::kDisabled:
+      msg.bus_state = rig::rig_status_t::BUS_DISABLED;
+      break;
+    case BusState::kUp:
+      msg.bus_state = rig::rig_status_t::BUS_UP;
+      break;
+    case BusState::kDown:
+      msg.bus_state = rig::rig_status_t::BUS_DOWN;
+      break;
   }
   const auto i64 = [](std::uint64_t v) { return static_cast<std::int64_t>(v); };
   msg.can_frames_received = i64(c.frames_received);

@@ -52,8 +52,8 @@ std::string check_multicast_route(const std::string& url) {
   const int error = errno;
   ::close(fd);
   if (rc == 0) return {};
-  return "rig: LCM disabled: no route to multicast group " + address->group + " of " + url +
-         " (" + std::strerror(error) + "). " + multicast_route_advice();
+  return "rig: LCM disabled: no route to multicast group " + address->group + " of " + url + " (" +
+         std::strerror(error) + "). " + multicast_route_advice();
 }
 
 }  // namespace rig::io

@@ -42,24 +42,40 @@ struct ArrayColumn {
 
 using S = rig::vehicle_state_t;
 constexpr std::array<ArrayColumn, 15> kUnitColumns{{
-    {"x_m", &S::unit_x_m}, {"y_m", &S::unit_y_m}, {"z_m", &S::unit_z_m},
-    {"roll_rad", &S::unit_roll_rad}, {"pitch_rad", &S::unit_pitch_rad},
-    {"yaw_rad", &S::unit_yaw_rad}, {"vx_mps", &S::unit_vx_mps}, {"vy_mps", &S::unit_vy_mps},
-    {"vz_mps", &S::unit_vz_mps}, {"wx_radps", &S::unit_wx_radps},
-    {"wy_radps", &S::unit_wy_radps}, {"wz_radps", &S::unit_wz_radps},
-    {"ax_mps2", &S::unit_ax_mps2}, {"ay_mps2", &S::unit_ay_mps2}, {"az_mps2", &S::unit_az_mps2},
+    {"x_m", &S::unit_x_m},
+    {"y_m", &S::unit_y_m},
+    {"z_m", &S::unit_z_m},
+    {"roll_rad", &S::unit_roll_rad},
+    {"pitch_rad", &S::unit_pitch_rad},
+    {"yaw_rad", &S::unit_yaw_rad},
+    {"vx_mps", &S::unit_vx_mps},
+    {"vy_mps", &S::unit_vy_mps},
+    {"vz_mps", &S::unit_vz_mps},
+    {"wx_radps", &S::unit_wx_radps},
+    {"wy_radps", &S::unit_wy_radps},
+    {"wz_radps", &S::unit_wz_radps},
+    {"ax_mps2", &S::unit_ax_mps2},
+    {"ay_mps2", &S::unit_ay_mps2},
+    {"az_mps2", &S::unit_az_mps2},
 }};
 constexpr std::array<ArrayColumn, 11> kWheelColumns{{
-    {"spin_radps", &S::wheel_spin_radps}, {"slip_x", &S::wheel_slip_x},
-    {"slip_y", &S::wheel_slip_y}, {"force_x_n", &S::wheel_force_x_n},
-    {"force_y_n", &S::wheel_force_y_n}, {"load_n", &S::wheel_load_n},
-    {"x_e_m", &S::wheel_x_e_m}, {"y_e_m", &S::wheel_y_e_m}, {"steer_rad", &S::wheel_steer_rad},
+    {"spin_radps", &S::wheel_spin_radps},
+    {"slip_x", &S::wheel_slip_x},
+    {"slip_y", &S::wheel_slip_y},
+    {"force_x_n", &S::wheel_force_x_n},
+    {"force_y_n", &S::wheel_force_y_n},
+    {"load_n", &S::wheel_load_n},
+    {"x_e_m", &S::wheel_x_e_m},
+    {"y_e_m", &S::wheel_y_e_m},
+    {"steer_rad", &S::wheel_steer_rad},
     {"brake_torque_nm", &S::wheel_brake_torque_nm},
     {"drive_torque_nm", &S::wheel_drive_torque_nm},
 }};
 constexpr std::array<ArrayColumn, 4> kJointColumns{{
-    {"force_x_n", &S::joint_force_x_n}, {"force_y_n", &S::joint_force_y_n},
-    {"force_z_n", &S::joint_force_z_n}, {"violation_m", &S::joint_violation_m},
+    {"force_x_n", &S::joint_force_x_n},
+    {"force_y_n", &S::joint_force_y_n},
+    {"force_z_n", &S::joint_force_z_n},
+    {"violation_m", &S::joint_violation_m},
 }};
 constexpr std::array<std::pair<const char*, double S::*>, 12> kScalarColumns{{
     {"steering_wheel_angle_rad", &S::steering_wheel_angle_rad},
@@ -104,8 +120,8 @@ class VehicleStateCsv final : public ChannelCsv {
   [[nodiscard]] const char* type_name() const override { return "rig.vehicle_state_t"; }
 
   [[nodiscard]] std::string header() const override {
-    std::vector<std::string> h{"timestamp_us", "sim_time_s", "monotonic_ns", "cycle",
-                               "lateness_ns", "compute_ns", "deadline_miss", "num_units"};
+    std::vector<std::string> h{"timestamp_us", "sim_time_s", "monotonic_ns",  "cycle",
+                               "lateness_ns",  "compute_ns", "deadline_miss", "num_units"};
     add_array_headers(h, "unit", kUnitColumns, units_);
     h.emplace_back("num_wheels");
     for (std::size_t i = 0; i < wheels_; ++i) h.push_back("wheel" + std::to_string(i) + "_unit");
@@ -203,9 +219,12 @@ class SignalsCsv final : public ChannelCsv {
  private:
   static const char* source_name(std::int8_t source) {
     switch (source) {
-      case rig::signals_t::SOURCE_DRIVER: return "driver";
-      case rig::signals_t::SOURCE_CAN: return "can";
-      default: return "model";
+      case rig::signals_t::SOURCE_DRIVER:
+        return "driver";
+      case rig::signals_t::SOURCE_CAN:
+        return "can";
+      default:
+        return "model";
     }
   }
 
@@ -219,16 +238,43 @@ class StatusCsv final : public ChannelCsv {
   [[nodiscard]] const char* type_name() const override { return "rig.rig_status_t"; }
 
   [[nodiscard]] std::string header() const override {
-    std::vector<std::string> h{
-        "timestamp_us", "sim_time_s", "monotonic_ns", "cycles", "deadline_misses",
-        "consecutive_misses", "max_consecutive_misses", "snapshots_dropped", "window_cycles",
-        "window_misses", "lateness_p50_ns", "lateness_p99_ns", "lateness_p999_ns",
-        "lateness_max_ns", "compute_p50_ns", "compute_p99_ns", "compute_max_ns", "period_s",
-        "offline", "sched_fifo", "priority", "memory_locked", "cpu", "overrun_policy",
-        "bus_state", "can_frames_received", "can_frames_sent", "can_timeouts",
-        "can_checksum_failures", "can_counter_failures", "can_bad_frames", "can_unknown_frames",
-        "can_error_frames", "can_out_of_range", "can_send_no_buffer", "can_send_dropped",
-        "can_reopens"};
+    std::vector<std::string> h{"timestamp_us",
+                               "sim_time_s",
+                               "monotonic_ns",
+                               "cycles",
+                               "deadline_misses",
+                               "consecutive_misses",
+                               "max_consecutive_misses",
+                               "snapshots_dropped",
+                               "window_cycles",
+                               "window_misses",
+                               "lateness_p50_ns",
+                               "lateness_p99_ns",
+                               "lateness_p999_ns",
+                               "lateness_max_ns",
+                               "compute_p50_ns",
+                               "compute_p99_ns",
+                               "compute_max_ns",
+                               "period_s",
+                               "offline",
+                               "sched_fifo",
+                               "priority",
+                               "memory_locked",
+                               "cpu",
+                               "overrun_policy",
+                               "bus_state",
+                               "can_frames_received",
+                               "can_frames_sent",
+                               "can_timeouts",
+                               "can_checksum_failures",
+                               "can_counter_failures",
+                               "can_bad_frames",
+                               "can_unknown_frames",
+                               "can_error_frames",
+                               "can_out_of_range",
+                               "can_send_no_buffer",
+                               "can_send_dropped",
+                               "can_reopens"};
     for (const auto& name : inputs_) h.push_back("input_valid_" + name);
     return join(h);
   }
@@ -238,19 +284,18 @@ class StatusCsv final : public ChannelCsv {
     if (inputs_.empty()) inputs_ = m_.input_name;
     line.add(event.timestamp_us);
     line.add(m_.sim_time_s);
-    for (std::int64_t v : {m_.monotonic_ns, m_.cycles, m_.deadline_misses,
-                           std::int64_t{m_.consecutive_misses},
-                           std::int64_t{m_.max_consecutive_misses}, m_.snapshots_dropped,
-                           std::int64_t{m_.window_cycles}, std::int64_t{m_.window_misses},
-                           m_.lateness_p50_ns, m_.lateness_p99_ns, m_.lateness_p999_ns,
-                           m_.lateness_max_ns, m_.compute_p50_ns, m_.compute_p99_ns,
-                           m_.compute_max_ns}) {
+    for (std::int64_t v :
+         {m_.monotonic_ns, m_.cycles, m_.deadline_misses, std::int64_t{m_.consecutive_misses},
+          std::int64_t{m_.max_consecutive_misses}, m_.snapshots_dropped,
+          std::int64_t{m_.window_cycles}, std::int64_t{m_.window_misses}, m_.lateness_p50_ns,
+          m_.lateness_p99_ns, m_.lateness_p999_ns, m_.lateness_max_ns, m_.compute_p50_ns,
+          m_.compute_p99_ns, m_.compute_max_ns}) {
       line.add(v);
     }
     line.add(m_.period_s);
-    for (std::int64_t v : {std::int64_t{m_.offline}, std::int64_t{m_.sched_fifo},
-                           std::int64_t{m_.priority}, std::int64_t{m_.memory_locked},
-                           std::int64_t{m_.cpu}}) {
+    for (std::int64_t v :
+         {std::int64_t{m_.offline}, std::int64_t{m_.sched_fifo}, std::int64_t{m_.priority},
+          std::int64_t{m_.memory_locked}, std::int64_t{m_.cpu}}) {
       line.add(v);
     }
     line.add(m_.overrun_policy);
@@ -274,9 +319,12 @@ class StatusCsv final : public ChannelCsv {
  private:
   static const char* bus_state_name(std::int8_t state) {
     switch (state) {
-      case rig::rig_status_t::BUS_UP: return "up";
-      case rig::rig_status_t::BUS_DOWN: return "down";
-      default: return "disabled";
+      case rig::rig_status_t::BUS_UP:
+        return "up";
+      case rig::rig_status_t::BUS_DOWN:
+        return "down";
+      default:
+        return "disabled";
     }
   }
 

@@ -49,8 +49,7 @@ ConversionSummary convert_lcm_log(const std::filesystem::path& log_file,
   if (!std::filesystem::is_regular_file(log_file)) {
     throw std::runtime_error(log_file.string() + ": no such LCM log file");
   }
-  std::unique_ptr<lcm_eventlog_t, EventlogCloser> log(
-      lcm_eventlog_create(log_file.c_str(), "r"));
+  std::unique_ptr<lcm_eventlog_t, EventlogCloser> log(lcm_eventlog_create(log_file.c_str(), "r"));
   if (!log) {
     throw std::runtime_error(log_file.string() + ": cannot open (" + std::strerror(errno) + ")");
   }
@@ -60,8 +59,7 @@ ConversionSummary convert_lcm_log(const std::filesystem::path& log_file,
   std::map<std::string, ChannelOutput> outputs;
   CsvLine line;
   for (;;) {
-    std::unique_ptr<lcm_eventlog_event_t, EventCloser> raw(
-        lcm_eventlog_read_next_event(log.get()));
+    std::unique_ptr<lcm_eventlog_event_t, EventCloser> raw(lcm_eventlog_read_next_event(log.get()));
     if (!raw) break;  // end of file (or a truncated last event)
     ++summary.events;
     const std::string channel(raw->channel, static_cast<std::size_t>(raw->channellen));

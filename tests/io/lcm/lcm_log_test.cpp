@@ -19,8 +19,7 @@ namespace {
 constexpr double kPeriod = 0.001;
 
 std::filesystem::path temp_path(const std::string& name) {
-  return std::filesystem::temp_directory_path() /
-         (name + "_" + std::to_string(::getpid()));
+  return std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
 }
 
 /// Writes `cycles` synthetic snapshots through the log writer.

@@ -56,12 +56,12 @@ TEST(LcmSettings, RejectsBadValuesWithFileAndLine) {
   const auto dir = std::filesystem::temp_directory_path().string() + "/";
   EXPECT_EQ(error_of("lcm_bad_key.toml", "[lcm]\nurl = \"udpm://\"\nrate = 3\n"),
             dir + "lcm_bad_key.toml:3: [lcm]: unknown key 'rate'");
-  EXPECT_NE(error_of("lcm_bad_rate.toml", "[lcm]\nstate_rate_hz = -1\n")
-                .find("lcm_bad_rate.toml:2:"),
-            std::string::npos);
-  EXPECT_NE(error_of("lcm_bad_url.toml", "[lcm]\nurl = \"239.255.76.67\"\n")
-                .find("lcm_bad_url.toml:2:"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of("lcm_bad_rate.toml", "[lcm]\nstate_rate_hz = -1\n").find("lcm_bad_rate.toml:2:"),
+      std::string::npos);
+  EXPECT_NE(
+      error_of("lcm_bad_url.toml", "[lcm]\nurl = \"239.255.76.67\"\n").find("lcm_bad_url.toml:2:"),
+      std::string::npos);
   EXPECT_NE(error_of("lcm_bad_prefix.toml", "[lcm]\nchannel_prefix = \"a b\"\n")
                 .find("lcm_bad_prefix.toml:2:"),
             std::string::npos);

@@ -74,8 +74,8 @@ inline io::Snapshot make_synthetic_snapshot(std::uint64_t cycle, double period_s
     s.signals.value[i] = static_cast<double>(i) + 0.001 * c;
     s.signals.valid[i] = i % 5 != 0;
     s.signals.source[i] = !model::kSignalTable[i].is_input ? model::SignalSource::kModel
-                          : i % 2 == 0                      ? model::SignalSource::kDriver
-                                                            : model::SignalSource::kCan;
+                          : i % 2 == 0                     ? model::SignalSource::kDriver
+                                                           : model::SignalSource::kCan;
   }
 
   s.can.bus_state = io::BusState::kUp;
