@@ -33,6 +33,9 @@ rig_lcm_setup() {
     echo "SKIP: cannot create a network namespace"
     exit 77
   fi
+  # Room for LCM's receive buffer (it asks for 2 MB), so that a subscriber that is descheduled
+  # for a while on a loaded machine does not lose datagrams.
+  ip netns exec "$RIG_NETNS" sysctl -q -w net.core.rmem_max=8388608 2>/dev/null || true
   case "$mode" in
     route)
       ip -n "$RIG_NETNS" link set lo up
