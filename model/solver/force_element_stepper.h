@@ -41,7 +41,10 @@ class ForceElementStepper final : public Stage {
     Vector& s = element_.state();
     const bool analytic =
         mode_ == JacobianMode::kAnalyticOrFiniteDifference && element_.rate_jacobian(s, jac_);
-    if (!analytic) {
+    if (mode_ == JacobianMode::kNone) {
+      jac_.setZero();  // explicit Euler for a non-stiff element
+      element_.rate(s, f_);
+    } else if (!analytic) {
       finite_difference_rate_jacobian<N>(element_, s, jac_, work_, f_, f1_);
     } else {
       element_.rate(s, f_);

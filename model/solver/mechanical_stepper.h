@@ -4,7 +4,8 @@
 ///   M_VI = M - h dq/dz - h^2 dq/dy K^-1                       (modified mass matrix)
 ///   z(k+1) = z(k) + h M_VI^-1 q(y(k) + h K^-1 z(k), z(k), ...)
 ///   y(k+1) = y(k) + h K^-1 z(k+1)
-/// M and K^-1 are frozen at y(k); q and its Jacobians are taken at the predicted coordinates.
+/// M and K^-1 are frozen at y(k); q and its Jacobians are taken at the predicted coordinates
+/// (or at y(k), see ForceEvaluation).
 
 #include <type_traits>
 
@@ -29,18 +30,22 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
   using Matrix = typename MechanicalBlock<N>::Matrix;
 
   /// Dense factorization (or any factorization constructible from the size).
-  explicit MechanicalStepper(MechanicalBlock<N>& block,
-                             JacobianMode mode = JacobianMode::kAnalyticOrFiniteDifference) requires
+  explicit MechanicalStepper(
+      MechanicalBlock<N>& block, JacobianMode mode = JacobianMode::kAnalyticOrFiniteDifference,
+      ForceEvaluation evaluation = ForceEvaluation::kPredictedCoordinates) requires
       std::is_constructible_v<Factorization, Eigen::Index>
-      : MechanicalStepper(block, block.size(), mode) {}
+      : MechanicalStepper(block, block.size(), mode, evaluation) {}
 
   /// With the factorization built from init, e.g. ArrowheadFactorization from its
   /// ArrowheadPartition (the zero blocks of eqs. 30-31).
   template <typename FactorizationInit>
-  MechanicalStepper(MechanicalBlock<N>& block, const FactorizationInit& init,
-                    JacobianMode mode = JacobianMode::kAnalyticOrFiniteDifference)
+  requires std::is_constructible_v<Factorization, const FactorizationInit&> MechanicalStepper(
+      MechanicalBlock<N>& block, const FactorizationInit& init,
+      JacobianMode mode = JacobianMode::kAnalyticOrFiniteDifference,
+      ForceEvaluation evaluation = ForceEvaluation::kPredictedCoordinates)
       : block_(block),
         mode_(mode),
+        evaluation_(evaluation),
         n_(block.size()),
         k_inv_(n_, n_),
         m_(n_, n_),
@@ -85,10 +90,12 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
     block_.mass_matrix(y, m_);
     // eq. (6): q at the predicted coordinates y(k) + h K^-1 z(k)
     y_pred_ = y;
-    y_pred_.noalias() += h * k_inv_ * z;
+    if (evaluation_ == ForceEvaluation::kPredictedCoordinates) y_pred_.noalias() += h * k_inv_ * z;
     const bool analytic = mode_ == JacobianMode::kAnalyticOrFiniteDifference &&
                           block_.force_jacobians(y_pred_, z, dq_dy_, dq_dz_);
-    if (analytic) {
+    if (mode_ == JacobianMode::kNone) {
+      block_.applied_forces(y_pred_, z, q_);  // explicit forces: dq/dy, dq/dz stay zero
+    } else if (analytic) {
       block_.applied_forces(y_pred_, z, q_);
     } else {
       finite_difference_force_jacobians<N>(block_, y_pred_, z, dq_dy_, dq_dz_, work_y_, work_z_, q_,
@@ -135,6 +142,7 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
  private:
   MechanicalBlock<N>& block_;
   JacobianMode mode_;
+  ForceEvaluation evaluation_;
   Eigen::Index n_;
   Matrix k_inv_, m_, dq_dy_, dq_dz_, m_vi_;
   Vector y_pred_, q_, z_u_, work_y_, work_z_, q1_, q2_;

@@ -65,14 +65,26 @@ solver::NewtonParams default_pendulum_newton_params() noexcept {
   return p;
 }
 
+namespace {
+solver::JacobianMode jacobian_mode(PendulumScheme scheme) {
+  return scheme == PendulumScheme::kPaperListing
+             ? solver::JacobianMode::kNone
+             : solver::JacobianMode::kAnalyticOrFiniteDifference;
+}
+solver::ForceEvaluation force_evaluation(PendulumScheme scheme) {
+  return scheme == PendulumScheme::kPaperListing ? solver::ForceEvaluation::kCurrentCoordinates
+                                                 : solver::ForceEvaluation::kPredictedCoordinates;
+}
+}  // namespace
+
 CoupledPendulums::CoupledPendulums(const CoupledPendulumsParams& params,
-                                   const solver::NewtonParams& newton)
+                                   const solver::NewtonParams& newton, PendulumScheme scheme)
     : params_(params),
       rod_length_m_(examples::rod_length_m(params)),
       pendulum1_(params.mass1_kg, params.length1_m, params.gravity_mps2, params.phi1_0_rad),
       pendulum2_(params.mass2_kg, params.length2_m, params.gravity_mps2, params.phi2_0_rad),
-      stepper1_(pendulum1_),
-      stepper2_(pendulum2_),
+      stepper1_(pendulum1_, jacobian_mode(scheme), force_evaluation(scheme)),
+      stepper2_(pendulum2_, jacobian_mode(scheme), force_evaluation(scheme)),
       rod_(params, rod_length_m_),
       coupled_({&stepper1_, &stepper2_}, rod_, newton) {}
 
