@@ -36,18 +36,29 @@ Curve curve_at(double fz) {
   return c;
 }
 
-// f(s) = F(s)/s of the TMeasy characteristic; f(0) = dF0.
-double f_of_s(const Curve& c, double s) {
+// f(s) = F(s)/s of the TMeasy characteristic (f(0) = dF0) and its derivative df/ds.
+struct FOfS {
+  double f, df_ds;
+};
+
+FOfS f_of_s(const Curve& c, double s) {
   if (s <= c.sm) {
+    // F = dF0 s / (1 + sig (sig + A - 2)), sig = s / s_M, A = dF0 s_M / F_M
     const double sig = s / c.sm;
-    return c.df0 / (1.0 + sig * (sig + c.df0 * c.sm / c.fm - 2.0));
+    const double a = c.df0 * c.sm / c.fm;
+    const double den = 1.0 + sig * (sig + a - 2.0);
+    return {c.df0 / den, -c.df0 * (2.0 * sig + a - 2.0) / (c.sm * den * den)};
   }
   if (s < c.ss) {
     const double sig = (s - c.sm) / (c.ss - c.sm);
-    return (c.fm - (c.fm - c.fs) * sig * sig * (3.0 - 2.0 * sig)) / s;
+    const double force = c.fm - (c.fm - c.fs) * sig * sig * (3.0 - 2.0 * sig);
+    const double dforce = -(c.fm - c.fs) * 6.0 * sig * (1.0 - sig) / (c.ss - c.sm);
+    return {force / s, (dforce * s - force) / (s * s)};
   }
-  return c.fs / s;
+  return {c.fs / s, -c.fs / (s * s)};
 }
+
+double sign(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
 
 }  // namespace
 
@@ -57,34 +68,36 @@ QuarterCarTire::QuarterCarTire(double wheel_load_n, double radius_m)
 double QuarterCarTire::max_force_n() const noexcept { return curve_at(wheel_load_n_).fm; }
 double QuarterCarTire::stiffness_npm() const noexcept { return kStiffness_npm; }
 
-double QuarterCarTire::deflection_rate(double x_e, double v, double w) const noexcept {
-  const Curve c = curve_at(wheel_load_n_);
-  const double transport = radius_m_ * std::abs(w);
-  const double slip = std::abs(-(v - radius_m_ * w) / (transport + kVn_mps));  // eqs. (14-15)
-  const double f = f_of_s(c, slip);
-  // eq. (24): (d_x r|w| + f) x_e' = -f (v_x - r w) - c_x x_e r|w|
-  return (-f * (v - radius_m_ * w) - kStiffness_npm * x_e * transport) /
-         (kDamping_nspm * transport + f);
-}
-
 TireLongitudinalState QuarterCarTire::evaluate(double x_e, double v, double w) const noexcept {
+  const Curve c = curve_at(wheel_load_n_);
+  const double r = radius_m_;
+  const double u = v - r * w;                               // contact point sliding speed
+  const double transport = r * std::abs(w);                 // r_D |omega|
+  const double slip = std::abs(u) / (transport + kVn_mps);  // eqs. (14-15)
+  const FOfS fs = f_of_s(c, slip);
+  // eq. (24): (d_x r|w| + f) x_e' = -f (v_x - r w) - c_x x_e r|w|
+  const double num = -fs.f * u - kStiffness_npm * x_e * transport;
+  const double den = kDamping_nspm * transport + fs.f;
   TireLongitudinalState st;
-  st.deflection_rate_mps = deflection_rate(x_e, v, w);
+  st.deflection_rate_mps = num / den;
   st.force_n = kStiffness_npm * x_e + kDamping_nspm * st.deflection_rate_mps;  // eq. (22)
-  const double fm = max_force_n();
+  const double fm = c.fm;
   if (std::abs(st.force_n) > fm) {  // eq. (26)
     st.limited = true;
     st.force_n = std::copysign(fm, x_e);
     st.deflection_rate_mps = 0.0;
     return st;
   }
-  // Central differences of the scalar law (temporary until the tire module's analytic partials).
-  const double dx = 1e-7, dv = 1e-6, dw = 1e-6;
-  st.d_rate_d_deflection =
-      (deflection_rate(x_e + dx, v, w) - deflection_rate(x_e - dx, v, w)) / (2 * dx);
-  st.d_rate_d_speed =
-      (deflection_rate(x_e, v + dv, w) - deflection_rate(x_e, v - dv, w)) / (2 * dv);
-  st.d_rate_d_spin = (deflection_rate(x_e, v, w + dw) - deflection_rate(x_e, v, w - dw)) / (2 * dw);
+  // Partial derivatives of x_e' = num / den (through f(s(v, w)) as well).
+  const double ds_dv = sign(u) / (transport + kVn_mps);
+  const double ds_dw = (-r * sign(u) - slip * r * sign(w)) / (transport + kVn_mps);
+  const double dnum_dv = -fs.df_ds * ds_dv * u - fs.f;
+  const double dden_dv = fs.df_ds * ds_dv;
+  const double dnum_dw = -fs.df_ds * ds_dw * u + fs.f * r - kStiffness_npm * x_e * r * sign(w);
+  const double dden_dw = kDamping_nspm * r * sign(w) + fs.df_ds * ds_dw;
+  st.d_rate_d_deflection = -kStiffness_npm * transport / den;
+  st.d_rate_d_speed = (dnum_dv - st.deflection_rate_mps * dden_dv) / den;
+  st.d_rate_d_spin = (dnum_dw - st.deflection_rate_mps * dden_dw) / den;
   return st;
 }
 

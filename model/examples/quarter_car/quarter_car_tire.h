@@ -34,8 +34,6 @@ class QuarterCarTire {
   [[nodiscard]] double limit_deflection(double deflection_m) const noexcept;
 
  private:
-  [[nodiscard]] double deflection_rate(double deflection_m, double speed_mps,
-                                       double spin_radps) const noexcept;
   double wheel_load_n_;
   double radius_m_;
 };
