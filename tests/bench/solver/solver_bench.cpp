@@ -7,6 +7,8 @@
 
 #include "model/examples/coupled_pendulums/coupled_pendulums.h"
 #include "model/examples/quarter_car/quarter_car.h"
+#include "model/solver/arrowhead_factorization.h"
+#include "model/solver/dense_factorization.h"
 #include "rig/paper/spring_reference.h"
 
 namespace {
@@ -84,6 +86,52 @@ void BM_PendulumCpuPerSimulatedSecond(benchmark::State& state) {
   state.counters["ratio_cvode_free_over_dae"] = cvode_free_s / dae_s;
 }
 BENCHMARK(BM_PendulumCpuPerSimulatedSecond)->Unit(benchmark::kMillisecond);
+
+// Factorization + one solve of a vehicle-sized M_VI (eqs. 30-31): body 6 DOF, two axles of
+// 10 DOF each (hub travels, spins, compliant axle states), dense LU vs the arrowhead form.
+Eigen::MatrixXd vehicle_like_matrix(const rig::model::solver::ArrowheadPartition& p) {
+  const Eigen::Index n = p.total_size();
+  Eigen::MatrixXd a = Eigen::MatrixXd::Random(n, n);
+  a.diagonal().array() += static_cast<double>(n);
+  Eigen::Index o1 = p.body_size;
+  for (std::size_t i = 0; i < p.leaf_sizes.size(); ++i) {
+    Eigen::Index o2 = p.body_size;
+    for (std::size_t j = 0; j < p.leaf_sizes.size(); ++j) {
+      if (i != j) a.block(o1, o2, p.leaf_sizes[i], p.leaf_sizes[j]).setZero();
+      o2 += p.leaf_sizes[j];
+    }
+    o1 += p.leaf_sizes[i];
+  }
+  return a;
+}
+
+void BM_MviDense26(benchmark::State& state) {
+  const rig::model::solver::ArrowheadPartition p{6, {10, 10}};
+  const Eigen::MatrixXd a = vehicle_like_matrix(p);
+  rig::model::solver::DenseFactorization<Eigen::Dynamic> f(p.total_size());
+  const Eigen::VectorXd b = Eigen::VectorXd::Random(p.total_size());
+  Eigen::VectorXd x(p.total_size());
+  for (auto _ : state) {
+    f.compute(a);
+    f.solve(b, x);
+    benchmark::DoNotOptimize(x.data());
+  }
+}
+BENCHMARK(BM_MviDense26);
+
+void BM_MviArrowhead26(benchmark::State& state) {
+  const rig::model::solver::ArrowheadPartition p{6, {10, 10}};
+  const Eigen::MatrixXd a = vehicle_like_matrix(p);
+  rig::model::solver::ArrowheadFactorization f(p);
+  const Eigen::VectorXd b = Eigen::VectorXd::Random(p.total_size());
+  Eigen::VectorXd x(p.total_size());
+  for (auto _ : state) {
+    f.compute(a);
+    f.solve(b, x);
+    benchmark::DoNotOptimize(x.data());
+  }
+}
+BENCHMARK(BM_MviArrowhead26);
 
 }  // namespace
 
