@@ -71,7 +71,7 @@ class KinematicTable {
 
  private:
   Grid2D grid_;
-  std::vector<double> values_;
+  std::vector<double> values_ = std::vector<double>(1, 0.0);  ///< default: f = 0 (1x1 grid)
 };
 
 }  // namespace rig::model::kinematics
