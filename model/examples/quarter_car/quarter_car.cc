@@ -39,27 +39,28 @@ void QuarterCarBody::mass_matrix(const Vector&, Matrix& m) const noexcept {
 
 void QuarterCarBody::applied_forces(const Vector&, const Vector& z, Vector& q) const noexcept {
   const double sin_alpha = params_.grade / std::sqrt(1.0 + params_.grade * params_.grade);
-  const double fx = tire_.evaluate(deflection_(0), z(0), z(1)).force_n;
-  q(0) = fx - params_.mass_kg * params_.gravity_mps2 * sin_alpha;  // eq. (9), downhill force
-  q(1) = drive_torque_nm_ - params_.wheel_radius_m * fx;
+  const TireLongitudinalState st = tire_.evaluate(deflection_(0), z(0), z(1));
+  q(0) = st.force_n - params_.mass_kg * params_.gravity_mps2 * sin_alpha;  // eq. (9) + grade
+  q(1) = drive_torque_nm_ - params_.wheel_radius_m * st.force_n + st.rolling_torque_nm;
 }
 
 bool QuarterCarBody::force_jacobians(const Vector&, const Vector& z, Matrix& dq_dy,
                                      Matrix& dq_dz) const noexcept {
   // F_x = c x_e + d x_e'(x_e, v, omega): the stiff dependence on the speeds (eq. 22, 24)
   const TireLongitudinalState st = tire_.evaluate(deflection_(0), z(0), z(1));
-  constexpr double kDamping_nspm = 2000.0;
-  const double dfx_dv = st.limited ? 0.0 : kDamping_nspm * st.d_rate_d_speed;
-  const double dfx_dw = st.limited ? 0.0 : kDamping_nspm * st.d_rate_d_spin;
+  const double dfx_dv = st.d_force_d_speed;
+  const double dfx_dw = st.d_force_d_spin;
+  const double r = params_.wheel_radius_m;
   dq_dy.setZero();
-  dq_dz << dfx_dv, dfx_dw, -params_.wheel_radius_m * dfx_dv, -params_.wheel_radius_m * dfx_dw;
+  dq_dz << dfx_dv, dfx_dw, -r * dfx_dv, -r * dfx_dw + st.d_rolling_torque_d_spin;
   return true;
 }
 
 // ---- the assembled quarter car ----
 QuarterCar::QuarterCar(const QuarterCarParams& params)
     : params_(params),
-      tire_(params.mass_kg * params.gravity_mps2 / std::sqrt(1.0 + params.grade * params.grade),
+      tire_(params.tire,
+            params.mass_kg * params.gravity_mps2 / std::sqrt(1.0 + params.grade * params.grade),
             params.wheel_radius_m),
       tire_element_(tire_, deflection_, z_),
       body_(params_, tire_, y_, z_, deflection_),

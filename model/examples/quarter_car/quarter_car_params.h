@@ -2,7 +2,16 @@
 /// @file
 /// Parameters of the paper's quarter car (eq. 9, Fig. 6) on a grade.
 
+#include "model/tire/tmeasy_params.h"
+
 namespace rig::model::examples {
+
+/// The 215/55 R18 TMeasy tire, without rolling resistance: eq. (9) has none.
+constexpr tire::TmeasyParams quarter_car_tire_params() noexcept {
+  tire::TmeasyParams p = tire::default_215_55_r18();
+  p.rolling_resistance = 0.0;
+  return p;
+}
 
 struct QuarterCarParams {
   double mass_kg = 400.0;           ///< m
@@ -10,8 +19,9 @@ struct QuarterCarParams {
   double wheel_radius_m = 0.3;      ///< r (also the dynamic rolling radius r_D)
   double grade = 0.10;              ///< uphill grade, tan of the slope angle (10 %)
   double gravity_mps2 = 9.81;
-  double max_drive_torque_nm = 1000.0;         ///< drive torque at throttle_pedal = 1
-  double brake_gain_nm_per_pa = 1500.0 / 1e7;  ///< brake torque limit per brake pressure
+  double max_drive_torque_nm = 1000.0;                  ///< drive torque at throttle_pedal = 1
+  double brake_gain_nm_per_pa = 1500.0 / 1e7;           ///< brake torque limit per brake pressure
+  tire::TmeasyParams tire = quarter_car_tire_params();  ///< the TMeasy tire (model/tire)
 };
 
 /// Inputs of one step.

@@ -217,7 +217,7 @@ TEST(Jacobians, PendulumAnalyticMatchesFiniteDifference) {
 
 TEST(Jacobians, QuarterCarBodyAndTireAnalyticMatchFiniteDifference) {
   const examples::QuarterCarParams params;
-  const examples::QuarterCarTire tire(3900.0, params.wheel_radius_m);
+  const examples::QuarterCarTire tire(params.tire, 3900.0, params.wheel_radius_m);
   for (const auto& [v, w, x_e] :
        {std::tuple{10.0, 34.0, 0.004}, std::tuple{0.3, 0.5, -0.002}, std::tuple{5.0, 18.0, 0.0}}) {
     Eigen::Matrix<double, 1, 1> s;
