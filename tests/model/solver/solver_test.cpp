@@ -343,6 +343,19 @@ TEST(Engine, StagesRunInOrderWithTheNewestStates) {
 }
 
 // ---- no allocation per step ----
+// A 12-state linear element of dynamic size (like the vehicle's half shafts).
+struct DynamicElement final : ForceElement<Eigen::Dynamic> {
+  Vector s = Vector::LinSpaced(12, -1.0, 1.0);
+  Matrix a = -Matrix::Identity(12, 12) * 30.0 + Matrix::Constant(12, 12, 0.5);
+  Eigen::Index state_size() const noexcept override { return 12; }
+  Vector& state() noexcept override { return s; }
+  void rate(const Vector& st, Vector& f) const noexcept override { f.noalias() = a * st; }
+  bool rate_jacobian(const Vector&, Matrix& j) const noexcept override {
+    j = a;
+    return true;
+  }
+};
+
 TEST(NoAllocation, SolverStepsAllocateNothing) {
   examples::CoupledPendulums pendulums;
   examples::QuarterCar car;
@@ -357,9 +370,17 @@ TEST(NoAllocation, SolverStepsAllocateNothing) {
   MechanicalStepper<1> ms(osc, JacobianMode::kFiniteDifference);
   Engine engine(ms);
   engine.add_stage(fe);
+  ArrowBlock dense_block;
+  MechanicalStepper<Eigen::Dynamic> dense(dense_block, JacobianMode::kFiniteDifference);
+  DynamicElement dyn_element;
+  ForceElementStepper<Eigen::Dynamic> dyn_stepper(dyn_element);
+  ForceElementStepper<Eigen::Dynamic> dyn_stepper_fd(dyn_element, JacobianMode::kFiniteDifference);
   const test::AllocationCounter counter;
   Eigen::internal::set_is_malloc_allowed(false);
   for (int i = 0; i < 2000; ++i) {
+    dense.advance(1e-3);
+    dyn_stepper.advance(1e-3);
+    dyn_stepper_fd.advance(1e-3);
     pendulums.step(1e-3);
     car.step(1e-3, examples::paper_maneuver_inputs(i * 1e-3 * 10));
     arrow.advance(1e-3);
