@@ -67,6 +67,17 @@ QuarterCar::QuarterCar(const QuarterCarParams& params)
       tire_stepper_(tire_element_),
       body_stepper_(body_) {}
 
+QuarterCar::State QuarterCar::state() const noexcept {
+  return {time_s_, y_(0), y_(1), z_(0), z_(1), deflection_(0)};
+}
+
+void QuarterCar::set_state(const State& state) noexcept {
+  time_s_ = state.time_s;
+  y_ << state.position_m, state.wheel_angle_rad;
+  z_ << state.speed_mps, state.spin_radps;
+  deflection_(0) = state.deflection_m;
+}
+
 double QuarterCar::tire_force_n() const noexcept {
   return tire_.evaluate(deflection_(0), z_(0), z_(1)).force_n;
 }

@@ -76,6 +76,14 @@ class QuarterCar {
   /// One step of size h with the given inputs (held over the step).
   void step(double h, const QuarterCarInputs& inputs) noexcept;
 
+  /// The integrated states (plain data), e.g. to roll back a step that went non-finite.
+  struct State {
+    double time_s = 0, position_m = 0, wheel_angle_rad = 0, speed_mps = 0, spin_radps = 0,
+           deflection_m = 0;
+  };
+  [[nodiscard]] State state() const noexcept;
+  void set_state(const State& state) noexcept;
+
   [[nodiscard]] double time_s() const noexcept { return time_s_; }
   [[nodiscard]] double position_m() const noexcept { return y_(0); }
   [[nodiscard]] double speed_mps() const noexcept { return z_(0); }

@@ -1,5 +1,6 @@
 #include "model/examples/quarter_car/quarter_car_model.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "model/examples/quarter_car/quarter_car.h"
@@ -23,9 +24,13 @@ StepStatus QuarterCarModel::step(Signals& signals) noexcept {
                               : 0.0;
   in.drive_torque_nm = throttle * params_.max_drive_torque_nm;
   in.brake_torque_limit_nm = pressure * params_.brake_gain_nm_per_pa;
+  const QuarterCar::State before = car_->state();
   car_->step(step_size_s_, in);
-  if (!std::isfinite(car_->speed_mps()) || !std::isfinite(car_->wheel_speed_radps()) ||
-      !std::isfinite(car_->position_m()) || !std::isfinite(car_->deflection_m())) {
+  const QuarterCar::State after = car_->state();
+  if (!std::isfinite(after.speed_mps) || !std::isfinite(after.spin_radps) ||
+      !std::isfinite(after.position_m) || !std::isfinite(after.wheel_angle_rad) ||
+      !std::isfinite(after.deflection_m)) {
+    car_->set_state(before);  // the contract: keep the last finite state
     return StepStatus::kNonFinite;
   }
   signals.set(Signal::kVehicleSpeed, car_->speed_mps());

@@ -26,6 +26,7 @@ class QuarterCarModel final : public rig::model::SteppedModel {
 
   /// The simulation underneath (for tools and tests).
   [[nodiscard]] const QuarterCar& quarter_car() const noexcept { return *car_; }
+  [[nodiscard]] QuarterCar& quarter_car() noexcept { return *car_; }
 
  private:
   QuarterCarParams params_;

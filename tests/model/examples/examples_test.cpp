@@ -172,6 +172,19 @@ TEST(QuarterCarModel, SignalsInOutAndReport) {
   EXPECT_EQ(sig[Signal::kWheelSpeedFL], 0.0);
 }
 
+TEST(QuarterCarModel, NonFiniteStepKeepsTheLastFiniteState) {
+  QuarterCarModel model(QuarterCarParams{}, 1e-3);
+  QuarterCar::State s = model.quarter_car().state();
+  s.speed_mps = 1e308;  // finite, but the step overflows
+  s.spin_radps = -1e308;
+  model.quarter_car().set_state(s);
+  Signals sig;
+  EXPECT_EQ(model.step(sig), StepStatus::kNonFinite);
+  EXPECT_EQ(model.quarter_car().state().speed_mps, 1e308);
+  EXPECT_EQ(model.quarter_car().state().spin_radps, -1e308);
+  EXPECT_EQ(model.time_s(), 0.0);
+}
+
 // ---------------------------------------------------------------- pendulums
 TEST(CoupledPendulums, InitialGeometryIsThePapers) {
   const CoupledPendulumsParams p;
