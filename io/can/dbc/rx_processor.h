@@ -21,7 +21,7 @@ namespace rig::io::can {
 
 /// What on_frame() did with a frame (also counted in IoCounters).
 enum class RxResult : std::uint8_t {
-  kAccepted,         ///< decoded and written (frames_received)
+  kAccepted,         ///< decoded and written
   kUnknownId,        ///< id/extended flag not in the RX mapping (unknown_frames)
   kBadLength,        ///< length differs from the DBC length (bad_frames)
   kChecksumFailure,  ///< checksum wrong (checksum_failures), frame rejected
@@ -38,8 +38,9 @@ class RxProcessor {
   void reset(std::int64_t now_ns, model::Signals& signals);
 
   /// Handles one received data frame. `id` without flag bits; `len` in bytes.
-  /// Counts into `counters` (frames_received, unknown_frames, bad_frames, checksum_failures,
-  /// counter_failures, out_of_range for each clamped signal value).
+  /// Counts into `counters`: unknown_frames, bad_frames, checksum_failures, counter_failures,
+  /// out_of_range (each clamped or non-finite value). frames_received is the transport's count,
+  /// not touched here. A rejected frame changes no signal and does not reset the timeout.
   RxResult on_frame(std::uint32_t id, bool extended, const std::uint8_t* data, std::size_t len,
                     std::int64_t time_ns, model::Signals& signals, io::IoCounters& counters);
 
@@ -65,7 +66,7 @@ class RxProcessor {
     std::uint32_t id = 0;
     bool extended = false;
     std::uint32_t length_bytes = 0;
-    MessageCodec codec;
+    dbc::MessageCodec codec;
     std::vector<Bound> bound;
     std::optional<CounterSpec> counter;
     std::optional<ChecksumSpec> checksum;
