@@ -1,0 +1,61 @@
+#include "model/vehicle/drivetrain.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rig::model::vehicle {
+namespace {
+
+double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
+  if (x <= xs.front()) return ys.front();
+  if (x >= xs.back()) return ys.back();
+  std::size_t i = 1;
+  while (xs[i] < x) ++i;
+  const double t = (x - xs[i - 1]) / (xs[i] - xs[i - 1]);
+  return ys[i - 1] + t * (ys[i] - ys[i - 1]);
+}
+
+}  // namespace
+
+double engine_torque_nm(const DrivetrainParams& p, double throttle, double speed_radps) noexcept {
+  // idle control: proportional throttle below idle speed; fuel cut above max speed
+  const double idle = std::clamp(p.idle_gain_per_radps * (p.idle_speed_radps - speed_radps), 0.0, 1.0);
+  double thr = std::max(std::clamp(throttle, 0.0, 1.0), idle);
+  if (speed_radps > p.max_speed_radps) thr = 0;
+  const double full = speed_radps > 0 ? interpolate(p.full_load_speed_radps, p.full_load_torque_nm, speed_radps) : 0.0;
+  const double drag = (p.drag_torque_nm + p.drag_torque_per_speed_nms * std::abs(speed_radps)) *
+                      std::tanh(speed_radps / 5.0);
+  return thr * full - (1.0 - thr) * drag;
+}
+
+Drivetrain::Drivetrain(VehicleBus& bus, const DrivetrainParams& p, const HalfShafts* shafts)
+    : bus_(bus), p_(p), shafts_(shafts) {}
+
+void Drivetrain::mass_matrix(const Vector& y, Matrix& m) const noexcept {
+  (void)y;
+  m << p_.engine_inertia_kgm2, 0, 0, p_.transmission_inertia_kgm2;
+}
+
+double Drivetrain::coupling_torque_nm(double engine_radps, double carrier_radps) const noexcept {
+  if (bus_.total_ratio == 0) return 0.0;
+  const double turbine = bus_.total_ratio * carrier_radps;
+  const double slip = engine_radps - turbine;
+  const double lock = std::clamp((std::abs(turbine) - p_.lockup_start_radps) /
+                                     (p_.lockup_full_radps - p_.lockup_start_radps),
+                                 0.0, 1.0);
+  return p_.converter_capacity_nms2 * std::abs(engine_radps) * slip + lock * p_.lockup_damping_nms * slip;
+}
+
+void Drivetrain::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
+  (void)y;
+  const double te = engine_torque_nm(p_, bus_.throttle, z(0));
+  const double tc = coupling_torque_nm(z(0), z(1));
+  double shafts = 0;
+  if (shafts_ != nullptr) {
+    shafts = shafts_->count() * shafts_->shaft_torque_nm(shafts_->state_const(), z(1));
+  }
+  q(0) = te - tc;
+  q(1) = p_.efficiency * bus_.total_ratio * tc - shafts;
+}
+
+}  // namespace rig::model::vehicle

@@ -1,0 +1,38 @@
+#pragma once
+/// @file
+/// Engine and transmission as a subsystem (eq. 2): speeds [w_e, w_c] = engine and differential
+/// input (wheel units). Engine torque map over throttle and speed with idle control; torque
+/// converter with lock-up clutch; gear ratio x final drive; the half shafts' common torque
+/// loads the differential input (half_shafts.h). Stiff parts (converter, lock-up, shaft
+/// damping) enter M_VI through the stepper's finite differences of this 2-DOF block.
+
+#include "model/solver/mechanical_block.h"
+#include "model/vehicle/half_shafts.h"
+
+namespace rig::model::vehicle {
+
+/// Engine torque [N m] at throttle [0..1] and speed, with idle control and drag.
+double engine_torque_nm(const DrivetrainParams& p, double throttle, double speed_radps) noexcept;
+
+class Drivetrain final : public solver::MechanicalBlock<2> {
+ public:
+  Drivetrain(VehicleBus& bus, const DrivetrainParams& p, const HalfShafts* shafts);
+  [[nodiscard]] Eigen::Index size() const noexcept override { return 2; }
+  [[nodiscard]] Vector& coordinates() noexcept override { return y_; }
+  [[nodiscard]] Vector& speeds() noexcept override { return z_; }
+  [[nodiscard]] double carrier_speed_radps() const noexcept { return z_(1); }
+  [[nodiscard]] double engine_speed_radps() const noexcept { return z_(0); }
+  void mass_matrix(const Vector& y, Matrix& m) const noexcept override;
+  void applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept override;
+  /// Converter + lock-up torque on the engine [N m].
+  [[nodiscard]] double coupling_torque_nm(double engine_radps, double carrier_radps) const noexcept;
+
+ private:
+  VehicleBus& bus_;
+  const DrivetrainParams& p_;
+  const HalfShafts* shafts_;
+  Vector y_ = Vector::Zero();
+  Vector z_ = Vector::Zero();
+};
+
+}  // namespace rig::model::vehicle

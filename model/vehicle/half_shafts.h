@@ -1,0 +1,44 @@
+#pragma once
+/// @file
+/// Torsionally compliant half shafts behind open differentials, as a force element (eq. 3).
+/// With open differentials throughout (and a 50:50 centre differential for all-wheel drive),
+/// every driven wheel gets the same shaft torque T and the side-gear speeds average to the
+/// differential input speed w_c. With twists theta_i and T = c theta_i + d theta_i':
+///   T = (c sum theta + d (n w_c - sum w_i)) / n,   theta_i' = (T - c theta_i) / d.
+/// Linear in theta, so its Jacobian is exact; integrated implicitly the torques stay smooth.
+
+#include <array>
+
+#include "model/solver/force_element.h"
+#include "model/vehicle/vehicle_bus.h"
+
+namespace rig::model::vehicle {
+
+class HalfShafts final : public solver::ForceElement<Eigen::Dynamic> {
+ public:
+  /// @param driven_wheels indices of the driven wheels (at least one)
+  HalfShafts(VehicleBus& bus, const DrivetrainParams& p, const std::array<int, kMaxWheels>& driven_wheels,
+             int driven_count);
+  [[nodiscard]] Eigen::Index state_size() const noexcept override { return n_; }
+  [[nodiscard]] Vector& state() noexcept override { return s_; }
+  [[nodiscard]] const Vector& state_const() const noexcept { return s_; }
+  void rate(const Vector& s, Vector& f) const noexcept override;
+  bool rate_jacobian(const Vector& s, Matrix& df_ds) const noexcept override;
+  /// The common shaft torque T at twists s, carrier speed w_c and the wheel spins in the bus.
+  [[nodiscard]] double shaft_torque_nm(const Vector& s, double carrier_radps) const noexcept;
+  /// dT / d w_c and dT / d w_i.
+  [[nodiscard]] double d_torque_d_carrier() const noexcept { return d_; }
+  [[nodiscard]] double d_torque_d_wheel() const noexcept { return -d_ / static_cast<double>(n_); }
+  [[nodiscard]] int count() const noexcept { return static_cast<int>(n_); }
+  [[nodiscard]] int wheel(int i) const noexcept { return wheels_[static_cast<std::size_t>(i)]; }
+
+ private:
+  VehicleBus& bus_;
+  double c_;
+  double d_;
+  std::array<int, kMaxWheels> wheels_;
+  Eigen::Index n_;
+  Vector s_;
+};
+
+}  // namespace rig::model::vehicle

@@ -1,0 +1,59 @@
+#pragma once
+/// @file
+/// The newest shared quantities of the vehicle's blocks within one step (who reads what is
+/// the sequential order of eq. 8: force elements, subsystems, framework). Plain data owned by
+/// VehicleModel; every block holds a reference.
+
+#include <array>
+
+#include "model/report.h"
+#include "model/vehicle/tmeasy.h"
+
+namespace rig::model::vehicle {
+
+inline constexpr int kMaxWheels = kMaxWheelsPerUnit;
+
+/// One wheel's state as seen by the other blocks.
+struct WheelBus {
+  // contact kinematics at the start of the step (y_V(k), z_V(k))
+  double vx_mps = 0;
+  double vy_mps = 0;
+  double load_n = 0;
+  double radius_dynamic_m = 0.3;
+  TmeasyLoadCurves curves{};
+  // subsystems
+  double spin_radps = 0;         ///< wheel spin state (owned by WheelSpinStage)
+  double steer_rad = 0;          ///< from the rack through the compliant tie rod
+  double tie_rod_force_n = 0;    ///< resisting rack force from this wheel's aligning torque
+  double shaft_torque_nm = 0;    ///< half-shaft torque on the wheel
+  double brake_capacity_nm = 0;  ///< from the wheel brake pressure
+  double brake_pressure_pa = 0;
+  double brake_torque_nm = 0;    ///< applied brake torque (signed, on the wheel)
+  // tire forces of the last framework step (for reports and the aligning torque)
+  double force_x_n = 0;
+  double force_y_n = 0;
+  double slip_x = 0;
+  double slip_y = 0;
+};
+
+struct VehicleBus {
+  int wheel_count = 0;
+  std::array<WheelBus, kMaxWheels> wheels{};
+  std::array<double, kMaxWheels * 2> deflection_m{};  ///< x_e, y_e per wheel (tire elements)
+  // drivetrain
+  double throttle = 0;
+  int gear = 0;
+  double total_ratio = 0;        ///< gear ratio x final drive (signed; 0 in neutral)
+  double carrier_speed_radps = 0;  ///< differential input speed in wheel units
+  double engine_torque_nm = 0;
+  // steering
+  double steering_angle_cmd_rad = 0;
+  double hand_torque_cmd_nm = 0;
+  bool assist_from_input = false;
+  double assist_input_nm = 0;
+  double assist_torque_nm = 0;   ///< applied (input or boost curve)
+  double torsion_bar_torque_nm = 0;
+  double rack_force_n = 0;
+};
+
+}  // namespace rig::model::vehicle

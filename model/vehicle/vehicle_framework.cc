@@ -1,0 +1,170 @@
+#include "model/vehicle/vehicle_framework.h"
+
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include "model/vehicle/tire_deflection.h"
+
+namespace rig::model::vehicle {
+
+VehicleFramework::VehicleFramework(VehicleBus& bus, const VehicleParams& p)
+    : bus_(bus),
+      p_(p),
+      wheel_count_(2 * static_cast<int>(p.axles.size())),
+      n_(6 + 2 * static_cast<Eigen::Index>(p.axles.size())) {
+  const double g = p.road.gravity_mps2;
+  // Gravity in the road frame: the road plane is z = 0, grade and bank tilt gravity.
+  const double grade = std::atan(p.road.grade), bank = std::atan(p.road.bank);
+  gravity_road_ = Vec3(-g * std::sin(grade), -g * std::cos(grade) * std::sin(bank),
+                       -g * std::cos(grade) * std::cos(bank));
+  const auto& c = p.chassis;
+  inertia_ << c.inertia_kgm2[0], 0, -c.inertia_xz_kgm2, 0, c.inertia_kgm2[1], 0,
+      -c.inertia_xz_kgm2, 0, c.inertia_kgm2[2];
+  total_mass_kg_ = c.mass_kg;
+  // Static loads of the sprung mass on the springs (heave + pitch of a rigid body on linear
+  // springs; the lever rule for two axles): the springs are preloaded so that the design
+  // position is at zero hub travel.
+  double sk = 0, skx = 0, skxx = 0;
+  for (const auto& a : p.axles) {
+    sk += 2 * a.spring_stiffness_npm;
+    skx += 2 * a.spring_stiffness_npm * a.position_x_m;
+    skxx += 2 * a.spring_stiffness_npm * a.position_x_m * a.position_x_m;
+  }
+  Eigen::Matrix2d a2;
+  a2 << sk, -skx, skx, -skxx;
+  const Eigen::Vector2d heave_pitch = a2.lu().solve(Eigen::Vector2d(c.mass_kg * g, 0));
+  for (int i = 0; i < wheel_count_; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const auto& a = p.axles[k / 2];
+    axle_of_[k] = i / 2;
+    total_mass_kg_ += a.unsprung_mass_kg;
+    preload_[k] = a.spring_stiffness_npm * (heave_pitch(0) - a.position_x_m * heave_pitch(1));
+    const double tire_load = preload_[k] + a.unsprung_mass_kg * g;
+    const double centre_height = a.tire.radius_unloaded_m - tire_load / a.tire.vertical_stiffness_npm;
+    mount_[k] = Vec3(a.position_x_m, (i % 2 == 0 ? 0.5 : -0.5) * a.track_m, centre_height - c.cg_height_m);
+  }
+  y_ = Vector::Zero(n_);
+  z_ = Vector::Zero(n_);
+  y_(2) = c.cg_height_m;
+}
+
+void VehicleFramework::kinematics_inverse(const Vector& y, Matrix& k_inv) const noexcept {
+  k_inv.setIdentity(n_, n_);
+  k_inv.block<3, 3>(0, 0) = body_to_road(y(3), y(4), y(5));
+  k_inv.block<3, 3>(3, 3) = euler_rates_from_body_rates(y(4), y(5));
+}
+
+void VehicleFramework::mass_matrix(const Vector& y, Matrix& m) const noexcept {
+  m.setZero(n_, n_);
+  m.block<3, 3>(0, 0).diagonal().setConstant(p_.chassis.mass_kg);
+  m.block<3, 3>(3, 3) = inertia_;
+  const Vec3 ez(0, 0, 1);
+  for (int i = 0; i < wheel_count_; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const double mw = p_.axles[k / 2].unsprung_mass_kg;
+    const Vec3 r = mount_[k] + Vec3(0, 0, y(6 + i));
+    const Mat3 rx = skew(r);
+    const Eigen::Index h = 6 + i;
+    // J_v = [I, -[r]x, e_z]: M += m J_v^T J_v
+    m.block<3, 3>(0, 0).diagonal().array() += mw;
+    m.block<3, 3>(0, 3) -= mw * rx;
+    m.block<3, 3>(3, 0) += mw * rx;  // (-[r]x)^T = [r]x
+    m.block<3, 3>(3, 3) += mw * rx.transpose() * rx;
+    m.block<3, 1>(0, h) += mw * ez;
+    m.block<1, 3>(h, 0) += mw * ez.transpose();
+    const Vec3 rxe = r.cross(ez);
+    m.block<3, 1>(3, h) += mw * rxe;
+    m.block<1, 3>(h, 3) += mw * rxe.transpose();
+    m(h, h) += mw;
+  }
+}
+
+WheelContact VehicleFramework::contact(const Vector& y, const Vector& z, int i) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  return wheel_contact(body_to_road(y(3), y(4), y(5)), y.head<3>(), z.segment<3>(0),
+                       z.segment<3>(3), mount_[k], y(6 + i), z(6 + i), bus_.wheels[k].steer_rad,
+                       p_.axles[k / 2].tire.radius_unloaded_m);
+}
+
+WheelForces VehicleFramework::wheel_forces(const Vector& y, const Vector& z, int i) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  const AxleParams& a = p_.axles[k / 2];
+  const TireParams& t = a.tire;
+  const WheelBus& w = bus_.wheels[k];
+  WheelForces out;
+  out.contact = contact(y, z, i);
+  const WheelContact& c = out.contact;
+  out.load_n = vertical_tire_force_n(c.penetration_m, c.penetration_rate_mps,
+                                     t.vertical_stiffness_npm, t.vertical_damping_nspm);
+  // Tire forces through the deflection states (eqs. 22, 24) with the newest x_e, y_e, w.
+  const double r = dynamic_radius_m(t.radius_unloaded_m, c.penetration_m);
+  const TmeasySlip slip = tmeasy_slip(w.curves, c.vx_mps, c.vy_mps, w.spin_radps, r, t.velocity_floor_mps);
+  out.slip_x = slip.slip_x;
+  out.slip_y = slip.slip_y;
+  const double rolling = r * std::abs(w.spin_radps);
+  const double xe = bus_.deflection_m[2 * k], ye = bus_.deflection_m[2 * k + 1];
+  const double xr = deflection_rate(xe, c.vx_mps - r * w.spin_radps, rolling, w.curves.normalize_x,
+                                    slip.f_per_slip, t.longitudinal_stiffness_npm, t.longitudinal_damping_nspm);
+  const double yr = deflection_rate(ye, c.vy_mps, rolling, w.curves.normalize_y, slip.f_per_slip,
+                                    t.lateral_stiffness_npm, t.lateral_damping_nspm);
+  double fx = t.longitudinal_stiffness_npm * xe + t.longitudinal_damping_nspm * xr;
+  double fy = t.lateral_stiffness_npm * ye + t.lateral_damping_nspm * yr;
+  // eq. (26), elliptic: never more than the maximum force of the characteristic
+  const double fxm = w.curves.x.max_force_n, fym = w.curves.y.max_force_n;
+  if (fxm <= 0 || fym <= 0 || out.load_n <= 0) {
+    fx = 0;
+    fy = 0;
+  } else {
+    const double rho = std::hypot(fx / fxm, fy / fym);
+    if (rho > 1) {
+      fx /= rho;
+      fy /= rho;
+    }
+  }
+  out.force_x_n = fx;
+  out.force_y_n = fy;
+  // Suspension: preloaded spring, bump/rebound damper, stops, anti-roll bar (wheel rates).
+  const double s = y(6 + i), sd = z(6 + i), s_other = y(6 + (i ^ 1));
+  double fs = preload_[k] + a.spring_stiffness_npm * s + (sd > 0 ? a.damper_bump_nspm : a.damper_rebound_nspm) * sd;
+  if (s > a.bump_stop_travel_m) fs += a.stop_stiffness_npm * (s - a.bump_stop_travel_m);
+  if (s < -a.rebound_stop_travel_m) fs += a.stop_stiffness_npm * (s + a.rebound_stop_travel_m);
+  fs += a.anti_roll_stiffness_npm * (s - s_other);
+  out.suspension_n = fs;
+  return out;
+}
+
+void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
+  const Mat3 rot = body_to_road(y(3), y(4), y(5));
+  const Vec3 v = z.segment<3>(0), w = z.segment<3>(3);
+  const Vec3 g = rot.transpose() * gravity_road_;
+  const double mc = p_.chassis.mass_kg;
+  q.setZero(n_);
+  // chassis: gravity, velocity-dependent acceleration a_0 = w x v, gyroscopic (explicit terms)
+  Vec3 ft = mc * (g - w.cross(v));
+  ft.x() -= 0.5 * p_.chassis.air_density_kgpm3 * p_.chassis.drag_area_m2 * v.x() * std::abs(v.x());
+  Vec3 tr = -w.cross(inertia_ * w);
+  for (int i = 0; i < wheel_count_; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const double mw = p_.axles[k / 2].unsprung_mass_kg;
+    const double sd = z(6 + i);
+    const Vec3 r = mount_[k] + Vec3(0, 0, y(6 + i));
+    const Vec3 a0 = w.cross(v) + w.cross(w.cross(r)) + 2.0 * w.cross(Vec3(0, 0, sd));
+    const Vec3 fw = mw * (g - a0);
+    const WheelForces wf = wheel_forces(y, z, i);
+    const WheelContact& c = wf.contact;
+    // tire force acting at the wheel centre (the spin DOF carries the moment r F_x) plus the
+    // reactions of the drive and brake torques on the chassis
+    const Vec3 f = fw + wf.force_x_n * c.ex + wf.force_y_n * c.ey + wf.load_n * c.normal;
+    ft += f;
+    // moment of the contact force about the wheel centre, except its spin-axis part
+    const Vec3 m_contact = (c.lever_m - r).cross(f - fw);
+    tr += r.cross(f) + m_contact - m_contact.dot(c.spin_axis) * c.spin_axis -
+          (bus_.wheels[k].shaft_torque_nm + bus_.wheels[k].brake_torque_nm) * c.spin_axis;
+    q(6 + i) = f.z() - wf.suspension_n;
+  }
+  q.segment<3>(0) = ft;
+  q.segment<3>(3) = tr;
+}
+
+}  // namespace rig::model::vehicle

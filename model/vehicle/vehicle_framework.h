@@ -1,0 +1,69 @@
+#pragma once
+/// @file
+/// The framework (eq. 1): chassis (6 DOF) + one hub-travel DOF per wheel.
+///   y_V = [x, y, z, yaw, pitch, roll, s_1..s_n],  z_V = [v_body, omega_body, s_1'..s_n'].
+/// Mass matrix and generalized forces by Jourdain's principle (method.md sec. 6): the chassis
+/// plus each unsprung mass at its wheel centre with J_v = [I, -[r]x, e_z]. Suspension forces act
+/// on the hub coordinates only; tire forces at the contact points with J_P. K_V = diag(K_BB, I)
+/// with K_BB inverted analytically. Speeds are ordered body first, then axle by axle, so that
+/// M_VI has the zero blocks of eqs. (30-31) (ArrowheadFactorization).
+
+#include <array>
+
+#include "model/solver/mechanical_block.h"
+#include "model/vehicle/vehicle_bus.h"
+#include "model/vehicle/wheel_contact.h"
+
+namespace rig::model::vehicle {
+
+/// What one wheel contributes at one framework state.
+struct WheelForces {
+  WheelContact contact;
+  double load_n = 0;
+  double force_x_n = 0;
+  double force_y_n = 0;
+  double slip_x = 0;
+  double slip_y = 0;
+  double suspension_n = 0;  ///< pushes the wheel down (compression +)
+};
+
+class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
+ public:
+  VehicleFramework(VehicleBus& bus, const VehicleParams& p);
+  [[nodiscard]] Eigen::Index size() const noexcept override { return n_; }
+  [[nodiscard]] Vector& coordinates() noexcept override { return y_; }
+  [[nodiscard]] Vector& speeds() noexcept override { return z_; }
+  void kinematics_inverse(const Vector& y, Matrix& k_inv) const noexcept override;
+  void mass_matrix(const Vector& y, Matrix& m) const noexcept override;
+  void applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept override;
+
+  /// Forces of wheel i at state (y, z) with the newest tire, wheel and steering states.
+  [[nodiscard]] WheelForces wheel_forces(const Vector& y, const Vector& z, int i) const noexcept;
+  /// Contact kinematics of wheel i at (y, z).
+  [[nodiscard]] WheelContact contact(const Vector& y, const Vector& z, int i) const noexcept;
+  [[nodiscard]] int wheel_count() const noexcept { return wheel_count_; }
+  [[nodiscard]] int axle_of(int wheel) const noexcept { return axle_of_[static_cast<std::size_t>(wheel)]; }
+  [[nodiscard]] const Vec3& mount(int wheel) const noexcept { return mount_[static_cast<std::size_t>(wheel)]; }
+  /// Total mass (sprung + unsprung).
+  [[nodiscard]] double total_mass_kg() const noexcept { return total_mass_kg_; }
+  /// Static spring preload of wheel i (design height at zero hub travel).
+  [[nodiscard]] double preload_n(int i) const noexcept { return preload_[static_cast<std::size_t>(i)]; }
+  /// Gravity in the road frame (grade and bank tilt it).
+  [[nodiscard]] const Vec3& gravity_road() const noexcept { return gravity_road_; }
+
+ private:
+  VehicleBus& bus_;
+  const VehicleParams& p_;
+  int wheel_count_;
+  Eigen::Index n_;
+  std::array<int, kMaxWheels> axle_of_{};
+  std::array<Vec3, kMaxWheels> mount_{};
+  std::array<double, kMaxWheels> preload_{};
+  Mat3 inertia_;
+  double total_mass_kg_ = 0;
+  Vec3 gravity_road_;
+  Vector y_;
+  Vector z_;
+};
+
+}  // namespace rig::model::vehicle

@@ -1,0 +1,90 @@
+#pragma once
+/// @file
+/// The generic vehicle (issue 6): framework (chassis + hub travel), TMeasy tires with
+/// first-order dynamics, wheel spins with implicit dry-friction brakes, rack-and-pinion steering
+/// with torsion bar and assist, engine / converter / gearbox / open differentials / compliant
+/// half shafts; advanced by the modified implicit Euler engine in the order of eq. (8).
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "model/solver/arrowhead_factorization.h"
+#include "model/solver/engine.h"
+#include "model/solver/force_element_stepper.h"
+#include "model/solver/mechanical_stepper.h"
+#include "model/stepped_model.h"
+#include "model/vehicle/drivetrain.h"
+#include "model/vehicle/half_shafts.h"
+#include "model/vehicle/steering.h"
+#include "model/vehicle/tire_deflection.h"
+#include "model/vehicle/vehicle_framework.h"
+#include "model/vehicle/wheel_spin.h"
+
+namespace rig::model::vehicle {
+
+class VehicleModel final : public SteppedModel {
+ public:
+  /// Builds every block and workspace (allocates); throws std::invalid_argument on parameters
+  /// the model cannot run (fewer than one axle, more than kMaxWheels wheels).
+  VehicleModel(const VehicleParams& params, double step_size_s);
+  ~VehicleModel() override;
+
+  [[nodiscard]] double step_size_s() const noexcept override { return h_; }
+  [[nodiscard]] double time_s() const noexcept override { return time_s_; }
+  StepStatus step(Signals& signals) noexcept override;
+  void fill_report(ModelReport& report) const noexcept override;
+
+  // ---- for tests and tools ----
+  [[nodiscard]] const VehicleParams& params() const noexcept { return p_; }
+  [[nodiscard]] const VehicleBus& bus() const noexcept { return bus_; }
+  [[nodiscard]] VehicleFramework& framework() noexcept { return *framework_; }
+  [[nodiscard]] Steering& steering() noexcept { return *steering_; }
+  [[nodiscard]] Drivetrain& drivetrain() noexcept { return *drivetrain_; }
+  /// Vertical tire force of wheel i after the last step [N].
+  [[nodiscard]] double wheel_load_n(int i) const noexcept;
+  /// Places the vehicle at rest at the design position with the engine idling, at (x, y, yaw).
+  void reset(double x_m, double y_m, double yaw_rad) noexcept;
+  /// Sets the forward speed (chassis, wheel spins, drivetrain consistent), for maneuver starts.
+  void set_forward_speed(double speed_mps) noexcept;
+
+ private:
+  void read_inputs(const Signals& s) noexcept;
+  void select_gear() noexcept;
+  void update_contacts() noexcept;
+  void write_outputs(Signals& s) noexcept;
+  void save_state() noexcept;
+  void restore_state() noexcept;
+  [[nodiscard]] bool state_finite() const noexcept;
+
+  VehicleParams p_;
+  double h_;
+  double time_s_ = 0;
+  VehicleBus bus_{};
+  int gear_request_ = 99;
+  double last_shift_s_ = -1e9;
+  std::array<int, kMaxWheels> axle_of_wheel_{};
+  std::array<WheelForces, kMaxWheels> wheel_out_{};
+
+  std::unique_ptr<VehicleFramework> framework_;
+  std::unique_ptr<HalfShafts> shafts_;
+  std::unique_ptr<Drivetrain> drivetrain_;
+  std::unique_ptr<Steering> steering_;
+  std::vector<std::unique_ptr<TireDeflection>> tires_;
+  std::vector<std::unique_ptr<solver::ForceElementStepper<2>>> tire_steppers_;
+  std::unique_ptr<solver::ForceElementStepper<Eigen::Dynamic>> shaft_stepper_;
+  std::unique_ptr<solver::MechanicalStepper<2>> drivetrain_stepper_;
+  std::unique_ptr<solver::MechanicalStepper<2>> steering_stepper_;
+  std::unique_ptr<WheelSpinStage> wheel_stage_;
+  std::unique_ptr<solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization>> framework_stepper_;
+  std::unique_ptr<solver::Engine> engine_;
+
+  // saved state for kNonFinite recovery and the acceleration output
+  Eigen::VectorXd saved_y_, saved_z_, saved_shafts_;
+  Eigen::Vector2d saved_dt_y_, saved_dt_z_, saved_st_y_, saved_st_z_;
+  std::array<double, kMaxWheels> saved_spin_{};
+  std::array<double, 2 * kMaxWheels> saved_deflection_{};
+  Vec3 accel_body_ = Vec3::Zero();
+};
+
+}  // namespace rig::model::vehicle

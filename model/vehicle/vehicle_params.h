@@ -1,0 +1,134 @@
+#pragma once
+/// @file
+/// Constant parameters of the generic vehicle (method.md sec. 2 and 6). Plain data, SI units;
+/// filled by rig/vehicle_config from TOML. No behaviour here.
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace rig::model::vehicle {
+
+/// TMeasy characteristic of one direction at one wheel load (tmeasy.de; Rill 2011, ch. 3).
+struct TmeasyCurve {
+  double initial_slope_n = 0;  ///< dF0 [N per unit slip]
+  double max_force_n = 0;      ///< F_M [N]
+  double slip_at_max = 0;      ///< s_M [-]
+  double sliding_force_n = 0;  ///< F_S [N]
+  double slip_at_sliding = 0;  ///< s_S [-]
+};
+
+/// TMeasy tire: curves at nominal load F_zN and at 2 F_zN (load dependence by the standard
+/// degressive interpolation), plus the deflection dynamics of eqs. (22-24).
+struct TireParams {
+  double radius_unloaded_m = 0.3;
+  double vertical_stiffness_npm = 2.5e5;
+  double vertical_damping_nspm = 500;
+  double nominal_load_n = 4000;
+  TmeasyCurve longitudinal_nominal{};  ///< at F_zN
+  TmeasyCurve longitudinal_double{};   ///< at 2 F_zN
+  TmeasyCurve lateral_nominal{};
+  TmeasyCurve lateral_double{};
+  double longitudinal_stiffness_npm = 1.8e5;  ///< c_x, eq. (22)
+  double longitudinal_damping_nspm = 500;     ///< d_x
+  double lateral_stiffness_npm = 1.2e5;       ///< c_y
+  double lateral_damping_nspm = 400;          ///< d_y
+  double spin_inertia_kgm2 = 1.0;             ///< wheel + tire + brake disc about the spin axis
+  double rolling_resistance = 0.01;           ///< coefficient f_r [-], torque r f_r F_z
+  double velocity_floor_mps = 0.01;           ///< v_N of eqs. (14-15)
+};
+
+/// One axle: two wheels at +-track/2, independent vertical hub travel.
+struct AxleParams {
+  double position_x_m = 0;     ///< wheel centre x relative to the sprung-mass CG (forward +)
+  double track_m = 1.55;
+  double unsprung_mass_kg = 40;  ///< per wheel
+  double spring_stiffness_npm = 3e4;   ///< at the wheel (wheel rate), per wheel
+  double damper_bump_nspm = 3e3;       ///< damping at the wheel, compression
+  double damper_rebound_nspm = 5e3;    ///< damping at the wheel, extension
+  double bump_stop_travel_m = 0.08;    ///< hub travel where the bump stop engages (up +)
+  double rebound_stop_travel_m = 0.10; ///< magnitude of down travel where the rebound stop engages
+  double stop_stiffness_npm = 5e5;
+  double anti_roll_stiffness_npm = 1e4;  ///< at the wheels: F = k (s_left - s_right)
+  bool steered = false;
+  bool driven = false;
+  int brake_circuit = 0;  ///< 0 = front circuit, 1 = rear circuit
+  double brake_gain_nm_per_pa = 1e-4;  ///< brake torque capacity per wheel per pressure
+  TireParams tire{};
+};
+
+/// Enhanced rack-and-pinion steering (sec. 2.2).
+struct SteeringParams {
+  bool torque_input = false;  ///< false: wheel driven by angle (steering robot); true: by hand torque
+  double wheel_inertia_kgm2 = 0.04;      ///< steering wheel + upper column
+  double column_damping_nmspr = 0.05;
+  double robot_stiffness_nmpr = 300;     ///< angle mode: position servo stiffness
+  double robot_damping_nmspr = 8;
+  double torsion_bar_stiffness_nmpr = 120;
+  double torsion_bar_damping_nmspr = 0.3;
+  double rack_per_pinion_m_per_rad = 0.0081;  ///< steering box ratio i_SB
+  double rack_mass_kg = 2.0;             ///< rack + pinion + motor reflected
+  double rack_friction_n = 150;          ///< dry friction, regularized implicitly
+  double rack_friction_speed_mps = 0.002;
+  double steering_arm_m = 0.13;          ///< wheel steer = rack travel / arm (small angles)
+  double tie_rod_stiffness_npm = 1.5e6;  ///< per side, as seen at the rack
+  double trail_m = 0.04;                 ///< pneumatic + caster trail for the aligning torque
+  double assist_gain = 4.0;              ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
+  double assist_max_nm = 12.0;
+};
+
+/// Engine, torque converter with lock-up, gearbox, open differentials (sec. 2.3).
+struct DrivetrainParams {
+  std::vector<double> full_load_speed_radps{80, 200, 400, 600, 700};
+  std::vector<double> full_load_torque_nm{120, 230, 250, 210, 150};
+  double drag_torque_nm = 15;             ///< at zero throttle
+  double drag_torque_per_speed_nms = 0.03;
+  double engine_inertia_kgm2 = 0.2;
+  double idle_speed_radps = 84;           ///< ~800 rpm
+  double idle_gain_per_radps = 0.02;      ///< throttle per rad/s below idle
+  double max_speed_radps = 680;
+  double converter_capacity_nms2 = 0.0047;  ///< T = k w_e (w_e - w_t)
+  double lockup_damping_nms = 50;           ///< lock-up clutch, fully engaged
+  double lockup_start_radps = 120;          ///< turbine speed where lock-up starts
+  double lockup_full_radps = 180;
+  std::vector<double> gear_ratios{4.2, 2.4, 1.5, 1.0, 0.8, 0.65};
+  double reverse_ratio = 3.6;
+  double final_drive_ratio = 3.5;
+  double efficiency = 0.92;
+  double transmission_inertia_kgm2 = 0.5;   ///< at the differential input (propeller shaft side)
+  double half_shaft_stiffness_nmpr = 8000;  ///< per driven wheel
+  double half_shaft_damping_nmspr = 40;
+  double upshift_speed_low_radps = 220;   ///< engine speed for an upshift at zero throttle
+  double upshift_speed_high_radps = 560;  ///< engine speed for an upshift at full throttle
+  double downshift_speed_radps = 130;
+  double shift_dwell_s = 0.8;
+};
+
+/// Sprung mass (chassis) and aerodynamics.
+struct ChassisParams {
+  double mass_kg = 1300;  ///< sprung mass
+  std::array<double, 3> inertia_kgm2{450, 1900, 2100};  ///< Ixx, Iyy, Izz about the CG
+  double inertia_xz_kgm2 = 0;
+  double cg_height_m = 0.55;  ///< design position, above ground
+  double drag_area_m2 = 0.65;  ///< c_d A
+  double air_density_kgpm3 = 1.2;
+};
+
+/// Road plane (eq. of the contact): z = 0 of the road frame; grade and bank only tilt gravity.
+struct RoadParams {
+  double grade = 0;       ///< tan of the uphill slope in +x [-] (0.2 = 20 %)
+  double bank = 0;        ///< tan of the bank slope, uphill in +y [-]
+  double friction = 1.0;  ///< mu, scales F_M and F_S of all tires
+  double gravity_mps2 = 9.81;
+};
+
+struct VehicleParams {
+  std::string name;
+  ChassisParams chassis{};
+  std::vector<AxleParams> axles;  ///< front to rear
+  SteeringParams steering{};
+  DrivetrainParams drivetrain{};
+  RoadParams road{};
+};
+
+}  // namespace rig::model::vehicle

@@ -1,0 +1,36 @@
+#pragma once
+/// @file
+/// The wheel spin rates as a subsystem stage with brakes as implicit dry friction
+/// (method.md sec. 6): per wheel, Theta w' = T_shaft - r_D F_x - T_B. The stage predicts the
+/// brake (+ rolling resistance) torque that brings w to zero at t + h; if it is within the
+/// capacity it applies exactly that (the wheel sticks: no creep, no chatter), otherwise the
+/// capacity against the motion. The tire's damping path d_x and the shaft damping enter the
+/// implicit mass Theta - h dq/dw. Also the tie-rod linkage: wheel steer from the new rack
+/// travel through the compliant tie rods (quasi-static).
+
+#include <array>
+
+#include "model/solver/stage.h"
+#include "model/vehicle/drivetrain.h"
+#include "model/vehicle/half_shafts.h"
+#include "model/vehicle/steering.h"
+
+namespace rig::model::vehicle {
+
+class WheelSpinStage final : public solver::Stage {
+ public:
+  WheelSpinStage(VehicleBus& bus, const VehicleParams& p, const std::array<int, kMaxWheels>& axle_of_wheel,
+                 const HalfShafts* shafts, Steering& steering, const Drivetrain& drivetrain);
+  void advance(double h) noexcept override;
+
+ private:
+  VehicleBus& bus_;
+  const VehicleParams& p_;
+  std::array<int, kMaxWheels> axle_of_wheel_;
+  std::array<bool, kMaxWheels> driven_{};
+  const HalfShafts* shafts_;
+  Steering& steering_;
+  const Drivetrain& drivetrain_;
+};
+
+}  // namespace rig::model::vehicle
