@@ -36,8 +36,8 @@ void axis_weights(double x_min, double step, int count, Interpolation method, do
   }
   // Catmull-Rom on nodes k-1 .. k+2 (Keys, a = -1/2)
   const double f2 = f * f, f3 = f2 * f;
-  double cw[4] = {0.5 * (-f3 + 2 * f2 - f), 0.5 * (3 * f3 - 5 * f2 + 2), 0.5 * (-3 * f3 + 4 * f2 + f),
-                  0.5 * (f3 - f2)};
+  double cw[4] = {0.5 * (-f3 + 2 * f2 - f), 0.5 * (3 * f3 - 5 * f2 + 2),
+                  0.5 * (-3 * f3 + 4 * f2 + f), 0.5 * (f3 - f2)};
   double cd[4] = {0.5 * (-3 * f2 + 4 * f - 1), 0.5 * (9 * f2 - 10 * f), 0.5 * (-9 * f2 + 8 * f + 1),
                   0.5 * (3 * f2 - 2 * f)};
   for (double& d : cd) d *= scale;
@@ -78,7 +78,8 @@ KinematicTable::KinematicTable(const Grid2D& grid, std::vector<double> values)
     throw std::invalid_argument("kinematic table: grid needs at least one node per direction");
   if ((grid.z_count > 1 && !(grid.z_step > 0)) || (grid.u_count > 1 && !(grid.u_step > 0)))
     throw std::invalid_argument("kinematic table: grid steps must be positive");
-  if (values_.size() != static_cast<std::size_t>(grid.z_count) * static_cast<std::size_t>(grid.u_count))
+  if (values_.size() !=
+      static_cast<std::size_t>(grid.z_count) * static_cast<std::size_t>(grid.u_count))
     throw std::invalid_argument("kinematic table: value count does not match the grid");
 }
 

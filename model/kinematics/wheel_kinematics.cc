@@ -58,7 +58,8 @@ WheelPose evaluate_geometry(const SuspensionGeometry& g, double z, double u) noe
 
 WheelKinematics generate_wheel_kinematics(const SuspensionGeometry& geometry, const Grid2D& grid,
                                           Interpolation method) {
-  const std::size_t n = static_cast<std::size_t>(grid.z_count) * static_cast<std::size_t>(grid.u_count);
+  const std::size_t n =
+      static_cast<std::size_t>(grid.z_count) * static_cast<std::size_t>(grid.u_count);
   std::vector<double> x(n), y(n), a(n), b(n), c(n);
   for (int k = 0; k < grid.z_count; ++k) {
     for (int l = 0; l < grid.u_count; ++l) {

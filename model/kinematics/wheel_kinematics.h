@@ -40,25 +40,24 @@ class WheelKinematics {
 /// the tables when a configuration gives none. Linear + quadratic in hub travel z; the steer
 /// angle from rack travel u through the steering arm: gamma_steer = asin(u / arm).
 struct SuspensionGeometry {
-  double x0_m = 0;                  ///< design wheel-centre x (relative to the axle reference)
-  double y0_m = 0.78;               ///< design wheel-centre y (half track; negative for a right wheel)
-  double x_per_z = 0.0;             ///< dx/dz: wheel recession with travel (anti-dive geometry) [-]
-  double track_per_z = 0.05;        ///< dy/dz: half-track change (scrub), positive = outwards [-]
-  double track_per_z2 = -0.5;       ///< d2y/dz2 / 2: the arc of the swing arm [1/m]
-  double camber0_rad = 0.0;         ///< static camber
-  double camber_per_z = -0.35;      ///< dalpha/dz: camber gain [rad/m] (sign as for a left wheel)
-  double beta_per_z = 0.0;          ///< dbeta/dz [rad/m]
-  double toe0_rad = 0.0;            ///< static toe
-  double bump_steer_per_z = 0.02;   ///< dgamma/dz: bump steer [rad/m]
-  double steering_arm_m = 0.0;      ///< effective steering arm; 0 = not steered (u ignored)
-  double steer_y_per_u = 0.0;       ///< dy/du: wheel-centre shift with steer (scrub radius) [-]
+  double x0_m = 0;              ///< design wheel-centre x (relative to the axle reference)
+  double y0_m = 0.78;           ///< design wheel-centre y (half track; negative for a right wheel)
+  double x_per_z = 0.0;         ///< dx/dz: wheel recession with travel (anti-dive geometry) [-]
+  double track_per_z = 0.05;    ///< dy/dz: half-track change (scrub), positive = outwards [-]
+  double track_per_z2 = -0.5;   ///< d2y/dz2 / 2: the arc of the swing arm [1/m]
+  double camber0_rad = 0.0;     ///< static camber
+  double camber_per_z = -0.35;  ///< dalpha/dz: camber gain [rad/m] (sign as for a left wheel)
+  double beta_per_z = 0.0;      ///< dbeta/dz [rad/m]
+  double toe0_rad = 0.0;        ///< static toe
+  double bump_steer_per_z = 0.02;  ///< dgamma/dz: bump steer [rad/m]
+  double steering_arm_m = 0.0;     ///< effective steering arm; 0 = not steered (u ignored)
+  double steer_y_per_u = 0.0;      ///< dy/du: wheel-centre shift with steer (scrub radius) [-]
 };
 
 /// Fills five tables on the grid from the geometry (z in [z_min, z_max], u in [u_min, u_max]);
 /// for an unsteered wheel pass a grid with u_count = 1. Allocates (construction time only).
 [[nodiscard]] WheelKinematics generate_wheel_kinematics(const SuspensionGeometry& geometry,
-                                                        const Grid2D& grid,
-                                                        Interpolation method);
+                                                        const Grid2D& grid, Interpolation method);
 
 /// The exact geometry functions (for tests and for checking table resolution).
 [[nodiscard]] WheelPose evaluate_geometry(const SuspensionGeometry& geometry, double hub_travel_m,

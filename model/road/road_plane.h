@@ -11,9 +11,9 @@ namespace rig::model::road {
 
 /// Road plane parameters.
 struct RoadPlaneParams {
-  double grade_rad = 0;  ///< inclination along x (atan of the grade ratio)
-  double bank_rad = 0;   ///< inclination along y
-  double friction = 1.0; ///< mu, the same everywhere on this plane
+  double grade_rad = 0;   ///< inclination along x (atan of the grade ratio)
+  double bank_rad = 0;    ///< inclination along y
+  double friction = 1.0;  ///< mu, the same everywhere on this plane
 };
 
 /// Grade given in percent (10 % = rise 0.1 per 1 m run) to the inclination angle [rad].

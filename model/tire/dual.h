@@ -54,13 +54,21 @@ constexpr Dual<N> operator/(const Dual<N>& a, const Dual<N>& b) {
   return r;
 }
 template <int N>
-constexpr Dual<N> operator+(const Dual<N>& a, double b) { return a + Dual<N>(b); }
+constexpr Dual<N> operator+(const Dual<N>& a, double b) {
+  return a + Dual<N>(b);
+}
 template <int N>
-constexpr Dual<N> operator+(double a, const Dual<N>& b) { return Dual<N>(a) + b; }
+constexpr Dual<N> operator+(double a, const Dual<N>& b) {
+  return Dual<N>(a) + b;
+}
 template <int N>
-constexpr Dual<N> operator-(const Dual<N>& a, double b) { return a - Dual<N>(b); }
+constexpr Dual<N> operator-(const Dual<N>& a, double b) {
+  return a - Dual<N>(b);
+}
 template <int N>
-constexpr Dual<N> operator-(double a, const Dual<N>& b) { return Dual<N>(a) - b; }
+constexpr Dual<N> operator-(double a, const Dual<N>& b) {
+  return Dual<N>(a) - b;
+}
 template <int N>
 constexpr Dual<N> operator*(const Dual<N>& a, double b) {
   Dual<N> r(a.v * b);
@@ -68,11 +76,17 @@ constexpr Dual<N> operator*(const Dual<N>& a, double b) {
   return r;
 }
 template <int N>
-constexpr Dual<N> operator*(double a, const Dual<N>& b) { return b * a; }
+constexpr Dual<N> operator*(double a, const Dual<N>& b) {
+  return b * a;
+}
 template <int N>
-constexpr Dual<N> operator/(const Dual<N>& a, double b) { return a * (1.0 / b); }
+constexpr Dual<N> operator/(const Dual<N>& a, double b) {
+  return a * (1.0 / b);
+}
 template <int N>
-constexpr Dual<N> operator/(double a, const Dual<N>& b) { return Dual<N>(a) / b; }
+constexpr Dual<N> operator/(double a, const Dual<N>& b) {
+  return Dual<N>(a) / b;
+}
 
 template <int N>
 inline Dual<N> sqrt(const Dual<N>& a) {
@@ -83,10 +97,14 @@ inline Dual<N> sqrt(const Dual<N>& a) {
   return r;
 }
 template <int N>
-constexpr Dual<N> abs(const Dual<N>& a) { return a.v < 0.0 ? -a : a; }
+constexpr Dual<N> abs(const Dual<N>& a) {
+  return a.v < 0.0 ? -a : a;
+}
 
 inline double value_of(double x) { return x; }
 template <int N>
-constexpr double value_of(const Dual<N>& x) { return x.v; }
+constexpr double value_of(const Dual<N>& x) {
+  return x.v;
+}
 
 }  // namespace rig::model::tire::internal

@@ -21,7 +21,8 @@ TmeasyCurve curve_at_load_dq(const TmeasyCurvePair& pair, double load_ratio,
 
 SlipNormalization slip_normalization(const TmeasyCurve& longitudinal,
                                      const TmeasyCurve& lateral) noexcept {
-  const auto n = internal::slip_normalization_t(internal::to_t(longitudinal), internal::to_t(lateral));
+  const auto n =
+      internal::slip_normalization_t(internal::to_t(longitudinal), internal::to_t(lateral));
   return {n.x, n.y};
 }
 
@@ -29,8 +30,8 @@ CharacteristicValue evaluate_characteristic(const TmeasyCurve& curve, double sli
   const double s = std::abs(slip);
   const auto sd = internal::Dual<1>::variable(s, 0);
   const internal::CurveT<internal::Dual<1>> k{curve.initial_slope_n, curve.max_force_n,
-                                               curve.max_slip, curve.slide_force_n,
-                                               curve.slide_slip};
+                                              curve.max_slip, curve.slide_force_n,
+                                              curve.slide_slip};
   const auto f = internal::f_of_s_t(k, sd);
   CharacteristicValue r;
   r.f_n = f.v;
@@ -43,10 +44,9 @@ CharacteristicValue evaluate_characteristic(const TmeasyCurve& curve, double sli
 TmeasyCurve generalized_curve(const TmeasyCurve& longitudinal, const TmeasyCurve& lateral,
                               const SlipNormalization& norm, double cos_phi,
                               double sin_phi) noexcept {
-  return internal::from_t(internal::generalized_curve_t(internal::to_t(longitudinal),
-                                                        internal::to_t(lateral),
-                                                        internal::NormT<double>{norm.x, norm.y},
-                                                        cos_phi, sin_phi));
+  return internal::from_t(
+      internal::generalized_curve_t(internal::to_t(longitudinal), internal::to_t(lateral),
+                                    internal::NormT<double>{norm.x, norm.y}, cos_phi, sin_phi));
 }
 
 }  // namespace rig::model::tire

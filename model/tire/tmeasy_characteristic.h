@@ -43,10 +43,10 @@ struct SlipNormalization {
 
 /// One value of a characteristic: F(s), f(s) = F(s)/s (f(0) = dF0) and their slip derivatives.
 struct CharacteristicValue {
-  double force_n = 0;      ///< F(s)
-  double f_n = 0;          ///< f(s) = F(s)/s
-  double dforce_ds = 0;    ///< dF/ds
-  double df_ds = 0;        ///< df/ds
+  double force_n = 0;    ///< F(s)
+  double f_n = 0;        ///< f(s) = F(s)/s
+  double dforce_ds = 0;  ///< dF/ds
+  double df_ds = 0;      ///< df/ds
 };
 
 /// TMeasy's characteristic F(s) for s >= 0 (Rill 2011, eq. 3.63):
@@ -61,8 +61,8 @@ struct CharacteristicValue {
 /// The generalized characteristic of combined slip (Rill 2011, eqs. 3.84-3.86): with the
 /// normalized slips s_x^N, s_y^N (eqs. 14-15), s = sqrt(s_x^N^2 + s_y^N^2), cos(phi) = s_x^N/s,
 /// sin(phi) = s_y^N/s, each of dF0, s_M, F_M, s_S, F_S combines the directional values as
-///   dF0 = sqrt((dFx0 s^x cos)^2 + (dFy0 s^y sin)^2),  s_M = sqrt((s_xM/s^x cos)^2 + (s_yM/s^y sin)^2),
-///   F_M = sqrt((F_xM cos)^2 + (F_yM sin)^2)  (s_S, F_S as s_M, F_M).
+///   dF0 = sqrt((dFx0 s^x cos)^2 + (dFy0 s^y sin)^2),  s_M = sqrt((s_xM/s^x cos)^2 + (s_yM/s^y
+///   sin)^2), F_M = sqrt((F_xM cos)^2 + (F_yM sin)^2)  (s_S, F_S as s_M, F_M).
 /// At s = 0 the direction is undefined; phi = 0 is taken (f(0) = dFx0 s^x).
 [[nodiscard]] TmeasyCurve generalized_curve(const TmeasyCurve& longitudinal,
                                             const TmeasyCurve& lateral,

@@ -141,8 +141,8 @@ void TmeasyTire::evaluate(const TireInput& in, const TireDeflection& deflection,
 
   // longitudinal: eq. (26) limiter, else the dynamic force
   if (std::abs(fx.v) > st.max_long.v) {
-    const double sign = deflection.long_m != 0.0 ? std::copysign(1.0, deflection.long_m)
-                                                 : std::copysign(1.0, fx.v);
+    const double sign =
+        deflection.long_m != 0.0 ? std::copysign(1.0, deflection.long_m) : std::copysign(1.0, fx.v);
     out.long_limited = true;
     out.long_force_n = sign * st.max_long.v;
     out.d_force(0, kByLoad) = sign * st.max_long.d[kByLoad];
@@ -156,8 +156,8 @@ void TmeasyTire::evaluate(const TireInput& in, const TireDeflection& deflection,
     out.d_force(0, kByLongDeflection) = cx + dx * out.d_rate_d_deflection(0);
   }
   if (std::abs(fy.v) > st.max_lat.v) {
-    const double sign = deflection.lat_m != 0.0 ? std::copysign(1.0, deflection.lat_m)
-                                                : std::copysign(1.0, fy.v);
+    const double sign =
+        deflection.lat_m != 0.0 ? std::copysign(1.0, deflection.lat_m) : std::copysign(1.0, fy.v);
     out.lat_limited = true;
     out.lat_force_n = sign * st.max_lat.v;
     out.d_force(1, kByLoad) = sign * st.max_lat.d[kByLoad];
@@ -175,15 +175,18 @@ void TmeasyTire::evaluate(const TireInput& in, const TireDeflection& deflection,
   const double q = in.load_n / p.nominal_load_n;
   const TmeasyTrail& t = p.trail;
   const double n0 = internal::curve_at_load_t(  // (n/L)_0 linear in q like the slips
-      TmeasyCurvePair{{0, 0, t.trail_over_length_nominal, 0, 0},
-                      {0, 0, t.trail_over_length_double, 0, 0}},
-      q, 1.0).max_slip;
-  const double sy0 = internal::curve_at_load_t(
-      TmeasyCurvePair{{0, 0, t.zero_slip_nominal, 0, 0}, {0, 0, t.zero_slip_double, 0, 0}}, q,
-      1.0).max_slip;
-  const double syE = internal::curve_at_load_t(
-      TmeasyCurvePair{{0, 0, t.end_slip_nominal, 0, 0}, {0, 0, t.end_slip_double, 0, 0}}, q,
-      1.0).max_slip;
+                        TmeasyCurvePair{{0, 0, t.trail_over_length_nominal, 0, 0},
+                                        {0, 0, t.trail_over_length_double, 0, 0}},
+                        q, 1.0)
+                        .max_slip;
+  const double sy0 = internal::curve_at_load_t(TmeasyCurvePair{{0, 0, t.zero_slip_nominal, 0, 0},
+                                                               {0, 0, t.zero_slip_double, 0, 0}},
+                                               q, 1.0)
+                         .max_slip;
+  const double syE = internal::curve_at_load_t(TmeasyCurvePair{{0, 0, t.end_slip_nominal, 0, 0},
+                                                               {0, 0, t.end_slip_double, 0, 0}},
+                                               q, 1.0)
+                         .max_slip;
   const double lat_slip = -in.lat_speed_mps / (r * std::abs(in.spin_radps) + p.slip_velocity_mps);
   const double contact_length =
       std::sqrt(8.0 * p.unloaded_radius_m * in.load_n / p.vertical_stiffness_npm);

@@ -21,12 +21,12 @@ namespace rig::model::tire {
 
 /// Per-call inputs of the tire (kinematics from the framework, load from the vertical force).
 struct TireInput {
-  double long_speed_mps = 0;     ///< v_x: contact point velocity along the wheel heading
-  double lat_speed_mps = 0;      ///< v_y: contact point velocity lateral
-  double spin_radps = 0;         ///< omega: wheel spin rate about its axle
-  double rolling_radius_m = 0;   ///< r_D: dynamic rolling radius (see dynamic_rolling_radius())
-  double load_n = 0;             ///< F_z: wheel load; F_z <= 0 means lift-off
-  double friction = 1.0;         ///< mu of the road at the contact point
+  double long_speed_mps = 0;    ///< v_x: contact point velocity along the wheel heading
+  double lat_speed_mps = 0;     ///< v_y: contact point velocity lateral
+  double spin_radps = 0;        ///< omega: wheel spin rate about its axle
+  double rolling_radius_m = 0;  ///< r_D: dynamic rolling radius (see dynamic_rolling_radius())
+  double load_n = 0;            ///< F_z: wheel load; F_z <= 0 means lift-off
+  double friction = 1.0;        ///< mu of the road at the contact point
 };
 
 /// The tire's states s = (x_e, y_e): longitudinal and lateral deflection of the contact patch.
@@ -37,10 +37,10 @@ struct TireDeflection {
 
 /// Index of the inputs in the partial-derivative matrices of TireOutput.
 enum TirePartial : int {
-  kByLongSpeed = 0,  ///< d/dv_x
-  kByLatSpeed = 1,   ///< d/dv_y
-  kBySpin = 2,       ///< d/domega
-  kByLoad = 3,       ///< d/dF_z
+  kByLongSpeed = 0,       ///< d/dv_x
+  kByLatSpeed = 1,        ///< d/dv_y
+  kBySpin = 2,            ///< d/domega
+  kByLoad = 3,            ///< d/dF_z
   kByLongDeflection = 4,  ///< d/dx_e
   kByLatDeflection = 5,   ///< d/dy_e
   kTirePartialCount = 6
@@ -49,8 +49,8 @@ enum TirePartial : int {
 /// Everything a tire evaluation produces. Partials are exact derivatives of the smooth branch
 /// that is active (limiter and lift-off branches are piecewise constant in the inputs).
 struct TireOutput {
-  double long_force_n = 0;   ///< F_x = c_x x_e + d_x x_e' (eq. 22), or F_xM sign(x_e) (eq. 26)
-  double lat_force_n = 0;    ///< F_y = c_y y_e + d_y y_e', or F_yM sign(y_e)
+  double long_force_n = 0;        ///< F_x = c_x x_e + d_x x_e' (eq. 22), or F_xM sign(x_e) (eq. 26)
+  double lat_force_n = 0;         ///< F_y = c_y y_e + d_y y_e', or F_yM sign(y_e)
   double aligning_torque_nm = 0;  ///< M_z = -n F_y (pneumatic trail n)
   double rolling_torque_nm = 0;   ///< T_R about the wheel axle, opposes omega; add to the wheel's
                                   ///< spin equation: Theta omega' = T - r_D F_x + T_R
@@ -63,15 +63,15 @@ struct TireOutput {
   /// (dF_x/dv_x, dF_x/domega, dF_y/dv_y) that M_VI needs, and dF/dF_z.
   Eigen::Matrix<double, 2, kTirePartialCount> d_force = Eigen::Matrix<double, 2, 6>::Zero();
   double d_rolling_torque_d_spin = 0;  ///< dT_R/domega [N m s]
-  bool long_limited = false;  ///< eq. (26) active longitudinally
-  bool lat_limited = false;   ///< eq. (26) active laterally
-  bool lifted_off = false;    ///< F_z <= 0: no forces, the deflections relax
+  bool long_limited = false;           ///< eq. (26) active longitudinally
+  bool lat_limited = false;            ///< eq. (26) active laterally
+  bool lifted_off = false;             ///< F_z <= 0: no forces, the deflections relax
 };
 
 /// Steady-state TMeasy forces (eqs. 14-17), without deflection dynamics.
 struct SteadyStateForces {
-  double long_force_n = 0;  ///< F_x^S = f(s) s_x^N
-  double lat_force_n = 0;   ///< F_y^S = f(s) s_y^N
+  double long_force_n = 0;          ///< F_x^S = f(s) s_x^N
+  double lat_force_n = 0;           ///< F_y^S = f(s) s_y^N
   double long_slip_normalized = 0;  ///< s_x^N, eq. (14)
   double lat_slip_normalized = 0;   ///< s_y^N, eq. (15)
   double generalized_slip = 0;      ///< s

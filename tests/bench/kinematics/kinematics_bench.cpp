@@ -20,9 +20,11 @@ void BM_WheelKinematics(benchmark::State& state) {
     benchmark::DoNotOptimize(k.evaluate(z, u));
     z += 1e-9;
   }
-  state.SetLabel(method == Interpolation::kBicubic ? "bicubic, 5 functions" : "bilinear, 5 functions");
+  state.SetLabel(method == Interpolation::kBicubic ? "bicubic, 5 functions"
+                                                   : "bilinear, 5 functions");
 }
-BENCHMARK(BM_WheelKinematics)->Arg(static_cast<int>(Interpolation::kBilinear))
+BENCHMARK(BM_WheelKinematics)
+    ->Arg(static_cast<int>(Interpolation::kBilinear))
     ->Arg(static_cast<int>(Interpolation::kBicubic));
 
 void BM_SingleTable(benchmark::State& state) {
@@ -39,7 +41,8 @@ void BM_SingleTable(benchmark::State& state) {
     benchmark::DoNotOptimize(t.evaluate(z, u, method));
   }
 }
-BENCHMARK(BM_SingleTable)->Arg(static_cast<int>(Interpolation::kBilinear))
+BENCHMARK(BM_SingleTable)
+    ->Arg(static_cast<int>(Interpolation::kBilinear))
     ->Arg(static_cast<int>(Interpolation::kBicubic));
 
 }  // namespace

@@ -20,7 +20,8 @@ template <class F>
 KinematicTable sample(const Grid2D& g, F f) {
   std::vector<double> v;
   for (int k = 0; k < g.z_count; ++k)
-    for (int l = 0; l < g.u_count; ++l) v.push_back(f(g.z_min + k * g.z_step, g.u_min + l * g.u_step));
+    for (int l = 0; l < g.u_count; ++l)
+      v.push_back(f(g.z_min + k * g.z_step, g.u_min + l * g.u_step));
   return KinematicTable(g, v);
 }
 
@@ -58,8 +59,9 @@ TEST(KinematicTable, BicubicIsExactOnQuadraticsInInteriorCells) {
     EXPECT_NEAR(v.d_dz, -1.7 + 40.0 * ui + 24.0 * zi + 60.0 * zi * ui, 1e-10);
     EXPECT_NEAR(v.d_du, 2.5 + 40.0 * zi - 14.0 * ui + 30.0 * zi * zi, 1e-10);
     // bilinear is not exact on it (so the check above does see the method)
-    bilinear_err = std::max(bilinear_err, std::abs(t.evaluate(zi, ui, Interpolation::kBilinear).value -
-                                                   quadratic_fn(zi, ui)));
+    bilinear_err = std::max(
+        bilinear_err,
+        std::abs(t.evaluate(zi, ui, Interpolation::kBilinear).value - quadratic_fn(zi, ui)));
   }
   EXPECT_GT(bilinear_err, 1e-4);
   // nodes are reproduced by both methods
@@ -68,7 +70,8 @@ TEST(KinematicTable, BicubicIsExactOnQuadraticsInInteriorCells) {
 }
 
 TEST(KinematicTable, PartialsMatchFiniteDifferencesOfTheInterpolant) {
-  const KinematicTable t = sample(kGrid, [](double z, double u) { return std::sin(20 * z) * std::cos(15 * u); });
+  const KinematicTable t =
+      sample(kGrid, [](double z, double u) { return std::sin(20 * z) * std::cos(15 * u); });
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> z(-0.0799, 0.0799), u(-0.0599, 0.0599);
   const double e = 1e-7;
@@ -76,8 +79,10 @@ TEST(KinematicTable, PartialsMatchFiniteDifferencesOfTheInterpolant) {
     for (int i = 0; i < 300; ++i) {
       const double zi = z(rng), ui = u(rng);
       const TableValue v = t.evaluate(zi, ui, m);
-      const double fz = (t.evaluate(zi + e, ui, m).value - t.evaluate(zi - e, ui, m).value) / (2 * e);
-      const double fu = (t.evaluate(zi, ui + e, m).value - t.evaluate(zi, ui - e, m).value) / (2 * e);
+      const double fz =
+          (t.evaluate(zi + e, ui, m).value - t.evaluate(zi - e, ui, m).value) / (2 * e);
+      const double fu =
+          (t.evaluate(zi, ui + e, m).value - t.evaluate(zi, ui - e, m).value) / (2 * e);
       // bilinear is C0 at grid lines; random points are off them by far more than e
       EXPECT_NEAR(v.d_dz, fz, 1e-5 * (1 + std::abs(fz)));
       EXPECT_NEAR(v.d_du, fu, 1e-5 * (1 + std::abs(fu)));

@@ -15,8 +15,8 @@
 namespace rig::model::tire {
 namespace {
 
-constexpr double kR = 0.3;     // rolling radius for the tests [m]
-constexpr double kVn = 0.5;    // v_N of the default set
+constexpr double kR = 0.3;   // rolling radius for the tests [m]
+constexpr double kVn = 0.5;  // v_N of the default set
 
 // Hand formulas, written out independently of the library.
 double hand_parabola(double w1, double w2, double q) {
@@ -42,15 +42,13 @@ HandCurve hand_long(double fz) {
   const double q = fz / 3500.0;
   const double fm = hand_parabola(3900, 7400, q);
   const double sm = hand_linear(0.11, 0.15, q);
-  return {hand_parabola(100e3, 190e3, q), fm, sm, hand_parabola(0.9 * 3900, 0.9 * 7400, q),
-          3 * sm};
+  return {hand_parabola(100e3, 190e3, q), fm, sm, hand_parabola(0.9 * 3900, 0.9 * 7400, q), 3 * sm};
 }
 HandCurve hand_lat(double fz) {
   const double q = fz / 3500.0;
   const double fm = hand_parabola(3650, 6935, q);
   const double sm = hand_linear(0.16, 0.21, q);
-  return {hand_parabola(80e3, 152e3, q), fm, sm, hand_parabola(0.9 * 3650, 0.9 * 6935, q),
-          3 * sm};
+  return {hand_parabola(80e3, 152e3, q), fm, sm, hand_parabola(0.9 * 3650, 0.9 * 6935, q), 3 * sm};
 }
 // TMeasy normalizing factor s^x (Rill 2011, eq. 3.83).
 double hand_norm_x(const HandCurve& x, const HandCurve& y) {
@@ -70,7 +68,8 @@ TEST(TmeasyLoad, ParabolaAtOneAndAHalfNominalLoadByHand) {
   EXPECT_NEAR(x.max_slip, 0.13, 1e-15);
   EXPECT_NEAR(x.slide_force_n, 0.9 * 5700.0, 1e-9);
   EXPECT_NEAR(x.slide_slip, 0.39, 1e-15);
-  // lateral: dFy0 = 1.5 (160 - 76 - 4 * 1.5) kN = 117 kN; F_yM = 1.5 (7.3 - 3.4675 - 0.1825 * 1.5) kN
+  // lateral: dFy0 = 1.5 (160 - 76 - 4 * 1.5) kN = 117 kN; F_yM = 1.5 (7.3 - 3.4675 - 0.1825 * 1.5)
+  // kN
   const TmeasyCurve y = curve_at_load(p.lateral, 1.5, 1.0);
   EXPECT_NEAR(y.initial_slope_n, 117000.0, 1e-6);
   EXPECT_NEAR(y.max_force_n, 1.5 * (7300.0 - 3467.5 - 182.5 * 1.5), 1e-9);
@@ -196,8 +195,8 @@ TEST(TmeasyDynamics, LockedWheelSlidesWithTheContactPoint) {
   for (double xe : {0.0, 0.005}) {
     TireOutput out;
     tire.evaluate(in, {xe, 0.0}, out);
-    EXPECT_NEAR(out.deflection_rate(0), -0.5, 1e-12);  // eq. (25): x_e' = -v_x
-    EXPECT_NEAR(out.deflection_rate(1), 0.3, 1e-12);   // y_e' = -v_y
+    EXPECT_NEAR(out.deflection_rate(0), -0.5, 1e-12);              // eq. (25): x_e' = -v_x
+    EXPECT_NEAR(out.deflection_rate(1), 0.3, 1e-12);               // y_e' = -v_y
     EXPECT_NEAR(out.long_force_n, 250e3 * xe - 2000 * 0.5, 1e-9);  // eq. (22)
   }
 }
@@ -275,11 +274,11 @@ TEST(TmeasyDynamics, AnalyticPartialsMatchFiniteDifferences) {
     double vx, vy, w, fz, xe, ye;
   };
   const Case cases[] = {
-      {20.0, 0.0, 70.0, 3500, 0.004, 0.0},     // driving, pure longitudinal
-      {15.0, -0.8, 48.0, 4200, -0.003, 0.002}, // braking while cornering
-      {5.0, 0.6, 17.5, 2600, 0.001, -0.004},   // combined, low speed
-      {-3.0, 0.2, -9.0, 5200, -0.002, 0.001},  // reversing
-      {0.05, 0.01, 0.1, 3500, 0.002, 0.001},   // near stand-still
+      {20.0, 0.0, 70.0, 3500, 0.004, 0.0},      // driving, pure longitudinal
+      {15.0, -0.8, 48.0, 4200, -0.003, 0.002},  // braking while cornering
+      {5.0, 0.6, 17.5, 2600, 0.001, -0.004},    // combined, low speed
+      {-3.0, 0.2, -9.0, 5200, -0.002, 0.001},   // reversing
+      {0.05, 0.01, 0.1, 3500, 0.002, 0.001},    // near stand-still
   };
   for (const Case& c : cases) {
     TireInput in;
@@ -310,7 +309,8 @@ TEST(TmeasyDynamics, AnalyticPartialsMatchFiniteDifferences) {
       const double fd_fy = (op.lat_force_n - om.lat_force_n) / (2 * step[j]);
       const double fd_rx = (op.deflection_rate(0) - om.deflection_rate(0)) / (2 * step[j]);
       const double fd_ry = (op.deflection_rate(1) - om.deflection_rate(1)) / (2 * step[j]);
-      const double tol_f = 1e-5 * (1 + std::abs(fd_fx)) + 1e-5 * o.d_force.row(0).cwiseAbs().maxCoeff() * 1e-3;
+      const double tol_f =
+          1e-5 * (1 + std::abs(fd_fx)) + 1e-5 * o.d_force.row(0).cwiseAbs().maxCoeff() * 1e-3;
       EXPECT_NEAR(o.d_force(0, j), fd_fx, tol_f) << "dFx/d" << j << " vx " << c.vx;
       EXPECT_NEAR(o.d_force(1, j), fd_fy, 1e-5 * (1 + std::abs(fd_fy))) << "dFy/d" << j;
       EXPECT_NEAR(o.d_rate(0, j), fd_rx, 1e-5 * (1 + std::abs(fd_rx))) << "dxe'/d" << j;
@@ -364,7 +364,7 @@ TEST(TmeasyTorques, AligningTorqueFromPneumaticTrailAndRollingResistance) {
   ASSERT_GT(out.lat_force_n, 0.0);
   const double s_y = 0.2 / (20 + 0.5);
   const double l = std::sqrt(8 * 0.3469 * 3500 / 200e3);  // contact length
-  const double x = s_y / 0.4, w = 0.4 / 0.6;  // TMeasy trail, first segment
+  const double x = s_y / 0.4, w = 0.4 / 0.6;              // TMeasy trail, first segment
   const double n = 0.178 * ((1 - w) * (1 - x) + w * (1 - (3 - 2 * x) * x * x)) * l;
   EXPECT_NEAR(out.aligning_torque_nm, -n * out.lat_force_n, 1e-9);
   // rolling resistance opposes the spin: -f_r F_z r v/(|v| + v_N), v = r w
@@ -409,6 +409,62 @@ TEST(TmeasyTire, EvaluationAllocatesNothing) {
   Eigen::internal::set_is_malloc_allowed(true);
   EXPECT_EQ(allocations, 0u);
   EXPECT_TRUE(std::isfinite(sum));
+}
+
+}  // namespace
+}  // namespace rig::model::tire
+
+// The tire as a solver force element, advanced by the solver's eq. (8) force-element stepper.
+#include "model/solver/finite_difference.h"
+#include "model/solver/force_element_stepper.h"
+#include "model/tire/tmeasy_force_element.h"
+
+namespace rig::model::tire {
+namespace {
+
+TEST(TmeasyForceElement, StepperHoldsAtRestAndFollowsALockedWheel) {
+  TmeasyForceElement element;
+  solver::ForceElementStepper<2> stepper(element);
+  element.input() = TireInput{0.0, 0.0, 0.0, kR, 3500.0, 1.0};
+  element.state() << 0.01, -0.004;
+  Eigen::internal::set_is_malloc_allowed(false);
+  const rig::test::AllocationCounter counter;
+  for (int k = 0; k < 1000; ++k) stepper.advance(1e-3);  // stand-still: held (eq. 24)
+  const auto allocations = counter.count();
+  Eigen::internal::set_is_malloc_allowed(true);
+  EXPECT_EQ(allocations, 0u);
+  EXPECT_EQ(element.state()(0), 0.01);
+  EXPECT_EQ(element.state()(1), -0.004);
+  TireOutput out;
+  element.force(out);
+  EXPECT_DOUBLE_EQ(out.long_force_n, 2500.0);
+  // locked wheel sliding at 0.2 m/s: x_e' = -v_x (eq. 25) until F = c_x x_e + d_x x_e' reaches
+  // -F_xM, i.e. x_e = -(F_xM - d_x v_x)/c_x = -0.014 m; then eq. (26) holds x_e (x_e' = 0)
+  element.input().long_speed_mps = 0.2;
+  element.state() << 0.0, 0.0;
+  for (int k = 0; k < 10; ++k) stepper.advance(1e-3);
+  EXPECT_NEAR(element.state()(0), -0.002, 1e-12);
+  for (int k = 0; k < 200; ++k) stepper.advance(1e-3);
+  EXPECT_NEAR(element.state()(0), -(3900.0 - 2000.0 * 0.2) / 250e3, 1e-12);
+  element.force(out);
+  EXPECT_TRUE(out.long_limited);
+  EXPECT_NEAR(out.long_force_n, -3900.0, 1e-9);
+}
+
+TEST(TmeasyForceElement, RateJacobianMatchesFiniteDifferences) {
+  TmeasyForceElement element;
+  element.input() = TireInput{12.0, 0.4, 38.0, kR, 3000.0, 1.0};
+  element.state() << 0.001, -0.002;
+  Eigen::Matrix2d analytic, fd;
+  ASSERT_TRUE(element.rate_jacobian(element.state(), analytic));
+  Eigen::Vector2d work, f0, f1;
+  solver::finite_difference_rate_jacobian<2>(element, element.state(), fd, work, f0, f1);
+  EXPECT_NEAR((analytic - fd).norm(), 0.0, 1e-4 * analytic.norm());
+  // by hand, eq. (24): d x_e'/d x_e = -c_x r|w| s^x / (d_x r|w| s^x + f)
+  const double a = kR * 38.0 * hand_norm_x(hand_long(3000), hand_lat(3000));
+  const double f = element.tire().steady_state(element.input()).f_n;
+  EXPECT_NEAR(analytic(0, 0), -250e3 * a / (2000 * a + f), 1e-9);
+  EXPECT_EQ(analytic(0, 1), 0.0);
 }
 
 }  // namespace
