@@ -1,7 +1,9 @@
 // Acceptance tests of the generic vehicle (issue 6) on the sedan of config/vehicles/sedan.toml.
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <functional>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -53,5 +55,140 @@ TEST(Vehicle, StaticEquilibrium) {
               100 * front / total, 100 * front_expected / (mass * 9.81));
 }
 
+
+TEST(Vehicle, GradeHoldCreepAndRollAway) {
+  VehicleParams p = sedan();
+  p.road.grade = 0.20;  // 20 % uphill in +x
+  VehicleModel m(p, 1e-3);
+  Signals s = driver_inputs();
+  s[Signal::kGearRequest] = 0;
+  s[Signal::kBrakePressureFront] = 3e6;
+  s[Signal::kBrakePressureRear] = 3e6;
+  run(m, s, 1.0, nullptr);  // settle: tire deflections take up the slope force
+  const double x0 = m.framework().coordinates()(0);
+  run(m, s, 10.0, nullptr);
+  const double creep = std::abs(m.framework().coordinates()(0) - x0);
+  std::printf("grade 20 %%: creep over 10 s braked = %.3g mm\n", creep * 1e3);
+  EXPECT_LT(creep, 1e-3);
+  s[Signal::kBrakePressureFront] = 0;
+  s[Signal::kBrakePressureRear] = 0;
+  run(m, s, 3.0, nullptr);
+  const double rolled = m.framework().coordinates()(0) - x0;
+  std::printf("grade 20 %%: released, rolled %.2f m in 3 s, speed %.2f m/s\n", rolled, m.framework().speeds()(0));
+  EXPECT_LT(rolled, -1.0);  // rolls back downhill
+}
+
+TEST(Vehicle, AccelerationAndCoastDown) {
+  VehicleModel m(sedan(), 1e-3);
+  Signals s = driver_inputs();
+  s[Signal::kThrottlePedal] = 1.0;
+  double t100 = -1;
+  run(m, s, 15.0, [&](double t, Signals& sig) {
+    if (t100 < 0 && sig[Signal::kVehicleSpeed] >= 100 / 3.6) t100 = t;
+  });
+  const double v15 = s[Signal::kVehicleSpeed];
+  std::printf("full throttle: 0-100 km/h %.2f s, v(15 s) = %.1f km/h, gear %d, engine %.0f rad/s\n", t100,
+              3.6 * v15, static_cast<int>(s[Signal::kGear]), s[Signal::kEngineSpeed]);
+  EXPECT_GT(t100, 5.0);  // 135 kW, 1500 kg: about 7-9 s
+  EXPECT_LT(t100, 12.0);
+  EXPECT_GE(s[Signal::kGear], 3);
+  // coast-down in neutral: drag + rolling resistance against the (rotational) inertia
+  s[Signal::kThrottlePedal] = 0;
+  s[Signal::kGearRequest] = 0;
+  const double v0 = s[Signal::kVehicleSpeed];
+  run(m, s, 10.0, nullptr);
+  const double v1 = s[Signal::kVehicleSpeed];
+  const VehicleParams& p = m.params();
+  const double mass = m.framework().total_mass_kg() + 4 * p.axles[0].tire.spin_inertia_kgm2 / (0.31 * 0.31);
+  double v = v0;
+  for (int k = 0; k < 10000; ++k) {  // the hand model, explicit Euler at 1 ms
+    v -= 1e-3 * (0.5 * 1.2 * p.chassis.drag_area_m2 * v * v + 0.01 * m.framework().total_mass_kg() * 9.81) / mass;
+  }
+  std::printf("coast-down: %.2f -> %.2f m/s in 10 s (hand model %.2f m/s)\n", v0, v1, v);
+  EXPECT_NEAR(v0 - v1, v0 - v, 0.15 * (v0 - v));
+}
+
+/// Step steer (ISO 7401) at 80 km/h: returns yaw rate history stats.
+struct StepResult {
+  double yaw_rate_final = 0, yaw_rate_peak = 0, t90 = -1, ay_final = 0, yaw_rate_spread_end = 0;
+};
+
+StepResult step_steer(double h, double sw_angle_rad) {
+  VehicleModel m(sedan(), h);
+  Signals s = driver_inputs();
+  m.set_forward_speed(80 / 3.6);
+  s[Signal::kGearRequest] = 4;
+  StepResult r;
+  double t_step = 1.0;
+  double rmin = 1e9, rmax = -1e9;
+  std::vector<double> yaw;
+  const long n = std::lround(6.0 / h);
+  for (long k = 0; k < n; ++k) {
+    const double t = m.time_s();
+    // ramp to the step in 0.1 s (ISO 7401: as fast as possible, < 0.15 s); throttle holds speed
+    s[Signal::kSteeringWheelAngleCmd] = sw_angle_rad * std::clamp((t - t_step) / 0.1, 0.0, 1.0);
+    s[Signal::kThrottlePedal] = std::clamp(0.2 + 0.5 * (80 / 3.6 - s[Signal::kVehicleSpeed]), 0.0, 1.0);
+    if (m.step(s) != StepStatus::kOk) {
+      r.yaw_rate_final = NAN;
+      return r;
+    }
+    yaw.push_back(s[Signal::kYawRate]);
+    if (t > 5.0) {
+      rmin = std::min(rmin, s[Signal::kYawRate]);
+      rmax = std::max(rmax, s[Signal::kYawRate]);
+    }
+  }
+  r.yaw_rate_final = yaw.back();
+  r.ay_final = s[Signal::kLateralAccel];
+  r.yaw_rate_spread_end = rmax - rmin;
+  for (std::size_t k = 0; k < yaw.size(); ++k) {
+    r.yaw_rate_peak = std::max(r.yaw_rate_peak, yaw[k]);
+    if (r.t90 < 0 && yaw[k] >= 0.9 * r.yaw_rate_final) r.t90 = static_cast<double>(k + 1) * h - (t_step + 0.05);
+  }
+  return r;
+}
+
+TEST(Vehicle, StepSteerSettlesAtOneAndTwoMilliseconds) {
+  for (double h : {1e-3, 2e-3}) {
+    const StepResult r = step_steer(h, 0.5);  // ~29 deg at the steering wheel, ~4 m/s^2
+    ASSERT_TRUE(std::isfinite(r.yaw_rate_final)) << "h = " << h;
+    std::printf("step steer h=%.0f ms: yaw rate %.4f rad/s, a_y %.2f m/s^2, response time (90 %%) %.3f s, "
+                "overshoot %.1f %%, spread in the last second %.2e rad/s\n",
+                h * 1e3, r.yaw_rate_final, r.ay_final, r.t90,
+                100 * (r.yaw_rate_peak / r.yaw_rate_final - 1), r.yaw_rate_spread_end);
+    EXPECT_GT(r.yaw_rate_final, 0.1);
+    EXPECT_LT(r.t90, 0.5);
+    EXPECT_LT(r.yaw_rate_peak / r.yaw_rate_final, 1.3);
+    EXPECT_LT(r.yaw_rate_spread_end, 0.01 * r.yaw_rate_final);  // no (numerical) oscillation left
+  }
+}
+
+TEST(Vehicle, DeterministicAndNoAllocationPerStep) {
+  const VehicleParams p = sedan();
+  VehicleModel a(p, 1e-3), b(p, 1e-3);
+  Signals sa = driver_inputs(), sb = driver_inputs();
+  const auto inputs = [](double t, Signals& s) {
+    s[Signal::kThrottlePedal] = 0.5;
+    s[Signal::kSteeringWheelAngleCmd] = 0.3 * std::sin(t);
+    s[Signal::kBrakePressureFront] = t > 3 ? 2e6 : 0;
+    s[Signal::kBrakePressureRear] = t > 3 ? 1e6 : 0;
+  };
+  run(a, sa, 0.5, inputs);  // first steps outside the counter (lazy one-time init of the library)
+  run(b, sb, 0.5, inputs);
+  test::AllocationCounter counter;
+  Eigen::internal::set_is_malloc_allowed(false);
+  for (int k = 0; k < 4000; ++k) {
+    inputs(a.time_s(), sa);
+    inputs(b.time_s(), sb);
+    ASSERT_EQ(a.step(sa), StepStatus::kOk);
+    ASSERT_EQ(b.step(sb), StepStatus::kOk);
+  }
+  Eigen::internal::set_is_malloc_allowed(true);
+  EXPECT_EQ(counter.count(), 0u);
+  EXPECT_EQ(sa.value, sb.value);  // bitwise
+  ModelReport report;
+  a.fill_report(report);
+  EXPECT_EQ(report.units[0].wheel_count, 4);
+}
 }  // namespace
 }  // namespace rig::model::vehicle
