@@ -19,38 +19,59 @@ struct SlipState {
   D max_long, max_lat;        // F_xM, F_yM at the load and friction
 };
 
+using D1 = internal::Dual<1>;  // load-only quantities: derivative by q = F_z / F_zN
+
+/// A load-only dual lifted into the four slots (d/dF_z = d/dq / F_zN).
+D lift(const D1& a, double inv_nominal_load) {
+  D r(a.v);
+  r.d[kByLoad] = a.d[0] * inv_nominal_load;
+  return r;
+}
+
 SlipState slip_state(const TmeasyParams& p, const TireInput& in) {
   const D vx = D::variable(in.long_speed_mps, kByLongSpeed);
   const D vy = D::variable(in.lat_speed_mps, kByLatSpeed);
   const D w = D::variable(in.spin_radps, kBySpin);
-  const D q = D::variable(in.load_n / p.nominal_load_n, kByLoad, 1.0 / p.nominal_load_n);
+  const double inv_fzn = 1.0 / p.nominal_load_n;
+  const D1 q = D1::variable(in.load_n * inv_fzn, 0);
   const double mu_ratio = in.friction / p.reference_friction;
   const double r = in.rolling_radius_m;
 
+  // the load-dependent curves and normalizing factors depend on F_z only: cheap 1-slot duals
   const auto lo = internal::curve_at_load_t(p.longitudinal, q, mu_ratio);
   const auto la = internal::curve_at_load_t(p.lateral, q, mu_ratio);
   const auto norm = internal::slip_normalization_t(lo, la);
 
   SlipState st;
   const D rw = r * internal::abs(w);
-  st.roll_x = rw * norm.x;
-  st.roll_y = rw * norm.y;
+  st.roll_x = rw * lift(norm.x, inv_fzn);
+  st.roll_y = rw * lift(norm.y, inv_fzn);
   // eqs. (14-15): normalized slips with the artificial velocity v_N
   st.long_slip_n = -(vx - r * w) / (st.roll_x + p.slip_velocity_mps);
   st.lat_slip_n = -vy / (st.roll_y + p.slip_velocity_mps);
   const D s2 = st.long_slip_n * st.long_slip_n + st.lat_slip_n * st.lat_slip_n;
-  D cos_phi(1.0), sin_phi(0.0);
+  D cos2(1.0), sin2(0.0);
   if (s2.v > 1e-24) {
     st.s = internal::sqrt(s2);
-    cos_phi = st.long_slip_n / st.s;
-    sin_phi = st.lat_slip_n / st.s;
+    cos2 = st.long_slip_n * st.long_slip_n / s2;
+    sin2 = st.lat_slip_n * st.lat_slip_n / s2;
   } else {
     st.s = D(0.0);  // direction undefined at s = 0: phi = 0 (f(0) = dF0 of the x curve)
   }
-  const auto k = internal::generalized_curve_t(lo, la, norm, cos_phi, sin_phi);
+  // generalized curve (Rill 2011, eqs. 3.84-3.86): P = sqrt(P_x^2 cos^2 + P_y^2 sin^2)
+  auto comb = [&](const D1& x, const D1& y) {
+    return internal::sqrt(lift(x * x, inv_fzn) * cos2 + lift(y * y, inv_fzn) * sin2);
+  };
+  internal::CurveT<D> k{comb(lo.initial_slope_n * norm.x, la.initial_slope_n * norm.y),
+                        comb(lo.max_force_n, la.max_force_n),
+                        comb(lo.max_slip / norm.x, la.max_slip / norm.y), D(0.0), D(0.0)};
+  if (st.s.v > k.max_slip.v) {  // the sliding values are needed beyond s_M only
+    k.slide_force_n = comb(lo.slide_force_n, la.slide_force_n);
+    k.slide_slip = comb(lo.slide_slip / norm.x, la.slide_slip / norm.y);
+  }
   st.f = internal::f_of_s_t(k, st.s);
-  st.max_long = lo.max_force_n;
-  st.max_lat = la.max_force_n;
+  st.max_long = lift(lo.max_force_n, inv_fzn);
+  st.max_lat = lift(la.max_force_n, inv_fzn);
   return st;
 }
 
