@@ -1,6 +1,7 @@
 // Acceptance tests of the generic vehicle (issue 6) on the sedan of config/vehicles/sedan.toml.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <algorithm>
 #include <functional>
 #include <vector>
@@ -189,6 +190,59 @@ TEST(Vehicle, DeterministicAndNoAllocationPerStep) {
   ModelReport report;
   a.fill_report(report);
   EXPECT_EQ(report.units[0].wheel_count, 4);
+}
+
+TEST(Vehicle, SteadyStateCircleUndersteerGradientAndSaturation) {
+  // ISO 4138, constant steering-wheel-angle method: steady states at discrete speeds (held by a
+  // speed controller), then the speed raised slowly up to the limit.
+  const VehicleParams p = sedan();
+  VehicleModel m(p, 1e-3);
+  Signals s = driver_inputs();
+  const double sw = 1.1;  // rad at the steering wheel: R ~ 40 m at low speed
+  const double l = p.axles[0].position_x_m - p.axles[1].position_x_m;
+  double sxx = 0, sxy = 0, sx = 0, sy = 0, n = 0, ay_max = 0;
+  double v_target = 4.0;
+  m.set_forward_speed(v_target);
+  const auto control = [&](double, Signals& sig) {
+    sig[Signal::kSteeringWheelAngleCmd] = sw;
+    sig[Signal::kThrottlePedal] = std::clamp(0.1 + 0.8 * (v_target - sig[Signal::kVehicleSpeed]), 0.0, 1.0);
+  };
+  for (double v_hold : {5.0, 6.0, 7.0, 8.0}) {
+    v_target = v_hold;
+    run(m, s, 6.0, control);
+    const double v = s[Signal::kVehicleSpeed], r = s[Signal::kYawRate];
+    const double ay = v * r;  // steady state: a_y = v^2 / R = v r
+    const double steer = 0.5 * (m.bus().wheels[0].steer_rad + m.bus().wheels[1].steer_rad);
+    const double y = steer - l * r / v;  // delta - L / R = K a_y
+    std::printf("circle v %.2f m/s: a_y %.3f m/s^2, delta - L/R = %.5f rad\n", v, ay, y);
+    sxx += ay * ay, sxy += ay * y, sx += ay, sy += y, n += 1;
+  }
+  run(m, s, 50.0, [&](double t, Signals& sig) {
+    v_target = 8.0 + 0.3 * (t - 24.0);
+    control(t, sig);
+    ay_max = std::max(ay_max, sig[Signal::kVehicleSpeed] * sig[Signal::kYawRate]);
+  });
+  const double k_measured = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  // linear single-track value from the model's own parameters: K = m_f / C_f - m_r / C_r with
+  // C = 2 dF0_y(F_z) (TMeasy initial slope at the static wheel load) and the axle masses
+  double cf = 0, cr = 0, fzf = 0, fzr = 0;
+  {
+    VehicleModel st(p, 1e-3);
+    Signals s0 = driver_inputs();
+    s0[Signal::kGearRequest] = 0;
+    run(st, s0, 2.0, nullptr);
+    fzf = st.wheel_load_n(0) + st.wheel_load_n(1);
+    fzr = st.wheel_load_n(2) + st.wheel_load_n(3);
+    cf = 2 * tmeasy_curves(p.axles[0].tire, fzf / 2, 1.0).y.initial_slope_n;
+    cr = 2 * tmeasy_curves(p.axles[1].tire, fzr / 2, 1.0).y.initial_slope_n;
+  }
+  const double k_linear = fzf / 9.81 / cf - fzr / 9.81 / cr;
+  std::printf("circle: understeer gradient %.5f rad/(m/s^2) = %.3f deg/g at the wheels (linear %.5f), "
+              "a_y max %.2f m/s^2 = %.2f mu g, %d samples\n",
+              k_measured, k_measured * 9.81 * 180 / M_PI, k_linear, ay_max, ay_max / 9.81, static_cast<int>(n));
+  EXPECT_NEAR(k_measured, k_linear, 0.15 * std::abs(k_linear));
+  EXPECT_GT(ay_max, 0.75 * 9.81);
+  EXPECT_LT(ay_max, 1.05 * 9.81);
 }
 }  // namespace
 }  // namespace rig::model::vehicle
