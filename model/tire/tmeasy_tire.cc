@@ -162,8 +162,10 @@ void TmeasyTire::evaluate(const TireInput& in, const TireDeflection& deflection,
 
   // longitudinal: eq. (26) limiter, else the dynamic force
   if (std::abs(fx.v) > st.max_long.v) {
-    const double sign =
-        deflection.long_m != 0.0 ? std::copysign(1.0, deflection.long_m) : std::copysign(1.0, fx.v);
+    // eq. (26) writes sign(x_e); we take the sign of the dynamic force, which is the same
+    // whenever the spring part dominates, and does not reverse the force when the damping
+    // part d_x x_e' dominates (e.g. a wheel locking at speed with a small opposite x_e)
+    const double sign = std::copysign(1.0, fx.v);
     out.long_limited = true;
     out.long_force_n = sign * st.max_long.v;
     out.d_force(0, kByLoad) = sign * st.max_long.d[kByLoad];
@@ -177,8 +179,7 @@ void TmeasyTire::evaluate(const TireInput& in, const TireDeflection& deflection,
     out.d_force(0, kByLongDeflection) = cx + dx * out.d_rate_d_deflection(0);
   }
   if (std::abs(fy.v) > st.max_lat.v) {
-    const double sign =
-        deflection.lat_m != 0.0 ? std::copysign(1.0, deflection.lat_m) : std::copysign(1.0, fy.v);
+    const double sign = std::copysign(1.0, fy.v);
     out.lat_limited = true;
     out.lat_force_n = sign * st.max_lat.v;
     out.d_force(1, kByLoad) = sign * st.max_lat.d[kByLoad];

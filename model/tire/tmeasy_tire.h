@@ -49,8 +49,8 @@ enum TirePartial : int {
 /// Everything a tire evaluation produces. Partials are exact derivatives of the smooth branch
 /// that is active (limiter and lift-off branches are piecewise constant in the inputs).
 struct TireOutput {
-  double long_force_n = 0;        ///< F_x = c_x x_e + d_x x_e' (eq. 22), or F_xM sign(x_e) (eq. 26)
-  double lat_force_n = 0;         ///< F_y = c_y y_e + d_y y_e', or F_yM sign(y_e)
+  double long_force_n = 0;        ///< F_x = c_x x_e + d_x x_e' (eq. 22), or F_xM sign(F_x) (eq. 26)
+  double lat_force_n = 0;         ///< F_y = c_y y_e + d_y y_e', or F_yM sign(F_y)
   double aligning_torque_nm = 0;  ///< M_z = -n F_y (pneumatic trail n)
   double rolling_torque_nm = 0;   ///< T_R about the wheel axle, opposes omega; add to the wheel's
                                   ///< spin equation: Theta omega' = T - r_D F_x + T_R

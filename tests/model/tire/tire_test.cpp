@@ -224,7 +224,7 @@ TEST(TmeasyDynamics, LimiterHoldsForcesBelowTheirMaxima) {
     if (out.long_limited) {
       ++limited;
       ASSERT_EQ(out.deflection_rate(0), 0.0);  // eq. (26): x_e' = 0
-      ASSERT_NEAR(out.long_force_n, std::copysign(fxm, d.long_m), 1e-12 * fxm);
+      ASSERT_NEAR(std::abs(out.long_force_n), fxm, 1e-12 * fxm);
     }
   }
   EXPECT_GT(limited, 1000);  // the sample does exercise the limiter
@@ -236,6 +236,13 @@ TEST(TmeasyDynamics, LimiterHoldsForcesBelowTheirMaxima) {
   tire.evaluate(rest, {-0.02, 0.0}, out);
   EXPECT_TRUE(out.long_limited);
   EXPECT_DOUBLE_EQ(out.long_force_n, -3900.0);
+  // a wheel locking at 3 m/s with a small opposite deflection: F^D = 250 - 6000 N is limited
+  // to -F_xM (the force keeps its direction; it does not flip to sign(x_e))
+  rest.long_speed_mps = 3.0;
+  tire.evaluate(rest, {0.001, 0.0}, out);
+  EXPECT_TRUE(out.long_limited);
+  EXPECT_DOUBLE_EQ(out.long_force_n, -3900.0);
+  EXPECT_EQ(out.deflection_rate(0), 0.0);
   TireDeflection c{-0.02, 0.05};
   tire.clamp_deflection(3500, 1.0, c);
   EXPECT_DOUBLE_EQ(c.long_m, -3900.0 / 250e3);
