@@ -104,7 +104,9 @@ MessageBinding parse_message(StrictTable& t, const dbc::Database& db, bool rx) {
     }
     b.period_ns = static_cast<std::int64_t>(m.cycle_time_ms) * 1'000'000;
   }
-  for (StrictTable& st : t.tables("signal")) {
+  std::vector<StrictTable> signal_tables;
+  if (t.has("signal")) signal_tables = t.tables("signal");
+  for (StrictTable& st : signal_tables) {
     SignalBinding sb;
     sb.dbc_signal = signal_index(st, "dbc", m);
     const dbc::SignalDef& s = m.signals[sb.dbc_signal];
