@@ -65,4 +65,9 @@ struct TmeasyParams {
   return p;
 }
 
+/// Checks a parameter set for impossible values, for configuration loaders (which turn the
+/// message into a ConfigError with file:line). Returns nullptr if valid, else a static message
+/// naming the first bad field (e.g. "longitudinal.at_nominal: need 0 < s_M < s_S").
+[[nodiscard]] const char* check_params(const TmeasyParams& params) noexcept;
+
 }  // namespace rig::model::tire

@@ -87,6 +87,19 @@ TEST(TmeasyLoad, ParabolaAtOneAndAHalfNominalLoadByHand) {
   EXPECT_NEAR(curve_at_load_dq(p.longitudinal, 1.5, 1.0).max_force_n, 3500.0, 1e-9);
 }
 
+TEST(TmeasyLoad, DefaultSetIsValidAndBadValuesAreNamed) {
+  TmeasyParams p = default_215_55_r18();
+  EXPECT_EQ(check_params(p), nullptr);
+  EXPECT_EQ(p.lateral.at_double.slide_force_n, 0.9 * 6935.0);
+  EXPECT_EQ(p.lateral.at_double.slide_slip, 3 * 0.21);
+  p.longitudinal.at_double.slide_slip = 0.1;  // below s_M = 0.15
+  ASSERT_NE(check_params(p), nullptr);
+  EXPECT_STREQ(check_params(p), "longitudinal.at_double: need 0 < s_M < s_S");
+  p = default_215_55_r18();
+  p.slip_velocity_mps = 0;
+  EXPECT_STREQ(check_params(p), "slip_velocity_mps: v_N must be > 0");
+}
+
 TEST(TmeasyCharacteristic, SegmentsByHand) {
   const TmeasyCurve c{100e3, 3900, 0.11, 3510, 0.33};
   EXPECT_NEAR(evaluate_characteristic(c, 0.0).f_n, 100e3, 1e-9);  // f(0) = dF0
