@@ -43,8 +43,10 @@ CounterSpec parse_counter(StrictTable t, const dbc::MessageDef& m) {
   CounterSpec c;
   c.dbc_signal = signal_index(t, "signal", m);
   const auto& s = m.signals[c.dbc_signal];
-  const double max_modulus = s.length_bits >= 32 ? 4294967295.0 : std::ldexp(1.0, static_cast<int>(s.length_bits));
-  if (s.value_type != dbc::ValueType::kInteger) throw t.error("signal", "counter must be an integer signal");
+  const double max_modulus =
+      s.length_bits >= 32 ? 4294967295.0 : std::ldexp(1.0, static_cast<int>(s.length_bits));
+  if (s.value_type != dbc::ValueType::kInteger)
+    throw t.error("signal", "counter must be an integer signal");
   c.modulus = static_cast<std::uint32_t>(t.number_in("modulus", 2.0, max_modulus));
   c.max_step = static_cast<std::uint32_t>(t.number_in("max_step", 1.0, 1.0, c.modulus - 1.0));
   t.finish();
@@ -68,8 +70,8 @@ ChecksumSpec parse_checksum(StrictTable t, const dbc::MessageDef& m) {
   if (t.has("bytes")) {
     for (double b : t.numbers("bytes")) {
       if (b < 0 || b >= m.length_bytes || b != std::floor(b)) {
-        throw t.error("bytes", "byte index " + std::to_string(b) + " is outside message " +
-                                   m.name + " (" + std::to_string(m.length_bytes) + " bytes)");
+        throw t.error("bytes", "byte index " + std::to_string(b) + " is outside message " + m.name +
+                                   " (" + std::to_string(m.length_bytes) + " bytes)");
       }
       if (own[static_cast<std::size_t>(b)] != 0) {
         throw t.error("bytes", "covered bytes include the checksum itself");
@@ -132,7 +134,8 @@ MessageBinding parse_message(StrictTable& t, const dbc::Database& db, bool rx) {
       throw st.error("dbc", "signal " + s.name + " is the checksum, it cannot be mapped");
     }
     for (const auto& other : b.signals) {
-      if (other.dbc_signal == sb.dbc_signal) throw st.error("dbc", "signal " + s.name + " mapped twice");
+      if (other.dbc_signal == sb.dbc_signal)
+        throw st.error("dbc", "signal " + s.name + " mapped twice");
     }
     st.finish();
     b.signals.push_back(sb);
@@ -146,25 +149,27 @@ MessageBinding parse_message(StrictTable& t, const dbc::Database& db, bool rx) {
 CanMapping parse_can_mapping(StrictTable& table, const dbc::Database& database) {
   CanMapping mapping;
   if (table.has("rx")) {
-    for (StrictTable& t : table.tables("rx")) mapping.rx.push_back(parse_message(t, database, true));
+    for (StrictTable& t : table.tables("rx"))
+      mapping.rx.push_back(parse_message(t, database, true));
   }
   if (table.has("tx")) {
-    for (StrictTable& t : table.tables("tx")) mapping.tx.push_back(parse_message(t, database, false));
+    for (StrictTable& t : table.tables("tx"))
+      mapping.tx.push_back(parse_message(t, database, false));
   }
   // One message per direction at most; a model input bound once.
   for (std::size_t i = 0; i < mapping.rx.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
       if (mapping.rx[i].dbc_message == mapping.rx[j].dbc_message) {
-        throw table.error("rx", "message " + database.messages[mapping.rx[i].dbc_message].name +
-                                    " mapped twice");
+        throw table.error(
+            "rx", "message " + database.messages[mapping.rx[i].dbc_message].name + " mapped twice");
       }
     }
   }
   for (std::size_t i = 0; i < mapping.tx.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
       if (mapping.tx[i].dbc_message == mapping.tx[j].dbc_message) {
-        throw table.error("tx", "message " + database.messages[mapping.tx[i].dbc_message].name +
-                                    " mapped twice");
+        throw table.error(
+            "tx", "message " + database.messages[mapping.tx[i].dbc_message].name + " mapped twice");
       }
     }
   }

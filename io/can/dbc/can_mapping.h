@@ -50,7 +50,7 @@ namespace rig::io::can {
 
 /// One bound signal: index into MessageDef::signals, and the model side.
 struct SignalBinding {
-  std::size_t dbc_signal = 0;  ///< index in MessageDef::signals
+  std::size_t dbc_signal = 0;          ///< index in MessageDef::signals
   std::optional<model::Signal> model;  ///< empty for a TX constant
   double scale = 1.0;                  ///< model = dbc * scale + offset
   double offset = 0.0;

@@ -75,7 +75,7 @@ struct MessageDef {
 struct AttributeDefinition {
   std::string object_type;  ///< "", "BU_", "BO_", "SG_", "EV_"
   std::string name;
-  std::string value_type;  ///< "INT", "HEX", "FLOAT", "STRING", "ENUM"
+  std::string value_type;     ///< "INT", "HEX", "FLOAT", "STRING", "ENUM"
   std::string default_value;  ///< from BA_DEF_DEF_, "" if none
 };
 

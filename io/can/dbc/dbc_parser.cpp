@@ -18,9 +18,7 @@ constexpr std::uint32_t kMaxSignalBits = 64;
 constexpr std::uint32_t kExtendedFlag = 0x80000000u;
 constexpr std::uint32_t kMaxCycleTimeMs = 3'600'000;
 
-bool is_ident_start(char c) {
-  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_';
-}
+bool is_ident_start(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
 bool is_ident_char(char c) { return is_ident_start(c) || (c >= '0' && c <= '9'); }
 bool is_number_char(char c) {
   return (c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E' ||
@@ -208,7 +206,8 @@ class Parser {
     if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
     double value = 0.0;
     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (digits.empty()) fail(line, std::string("expected a number for ") + what + ", found " + found());
+    if (digits.empty())
+      fail(line, std::string("expected a number for ") + what + ", found " + found());
     if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(value)) {
       fail(line, std::string("bad number '") + clip(token) + "' for " + what);
     }
@@ -238,7 +237,8 @@ class Parser {
     if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
     std::int64_t value = 0;
     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (token.empty()) fail(line, std::string("expected an integer for ") + what + ", found " + found());
+    if (token.empty())
+      fail(line, std::string("expected an integer for ") + what + ", found " + found());
     if (ec != std::errc() || end != digits.data() + digits.size()) {
       fail(line, std::string("bad integer '") + clip(token) + "' for " + what);
     }
@@ -373,7 +373,8 @@ class Parser {
       }
     }
     expect(':', "after the signal name");
-    s.start_bit = static_cast<std::uint32_t>(unsigned_integer("start bit", kMaxMessageBytes * 8 - 1));
+    s.start_bit =
+        static_cast<std::uint32_t>(unsigned_integer("start bit", kMaxMessageBytes * 8 - 1));
     expect('|', "between start bit and length");
     s.length_bits = static_cast<std::uint32_t>(unsigned_integer("signal length", kMaxSignalBits));
     if (s.length_bits == 0) fail(line, "signal " + s.name + " has length 0");
@@ -626,7 +627,7 @@ class Parser {
     if (type != 0 && sig.mux_role == MuxRole::kMultiplexor) {
       fail(line, "multiplexor " + sig.name + " cannot be a float");
     }
-    sig.value_type = type == 1 ? ValueType::kFloat32
+    sig.value_type = type == 1   ? ValueType::kFloat32
                      : type == 2 ? ValueType::kFloat64
                                  : ValueType::kInteger;
   }

@@ -24,10 +24,9 @@ SignalCodec::SignalCodec(const SignalDef& signal)
       const std::uint32_t byte = bit / 8;
       const std::uint32_t lsb = bit % 8;
       const std::uint32_t width = std::min(8 - lsb, remaining);
-      segments_[segment_count_++] = {static_cast<std::uint8_t>(byte),
-                                     static_cast<std::uint8_t>(lsb),
-                                     static_cast<std::uint8_t>((1u << width) - 1u),
-                                     static_cast<std::uint8_t>(done)};
+      segments_[segment_count_++] = {
+          static_cast<std::uint8_t>(byte), static_cast<std::uint8_t>(lsb),
+          static_cast<std::uint8_t>((1u << width) - 1u), static_cast<std::uint8_t>(done)};
       required_bytes_ = byte + 1;
       done += width;
       bit += width;
@@ -42,10 +41,9 @@ SignalCodec::SignalCodec(const SignalDef& signal)
       const std::uint32_t width = std::min(msb + 1, remaining);
       const std::uint32_t lsb = msb + 1 - width;
       remaining -= width;
-      segments_[segment_count_++] = {static_cast<std::uint8_t>(byte),
-                                     static_cast<std::uint8_t>(lsb),
-                                     static_cast<std::uint8_t>((1u << width) - 1u),
-                                     static_cast<std::uint8_t>(remaining)};
+      segments_[segment_count_++] = {
+          static_cast<std::uint8_t>(byte), static_cast<std::uint8_t>(lsb),
+          static_cast<std::uint8_t>((1u << width) - 1u), static_cast<std::uint8_t>(remaining)};
       required_bytes_ = byte + 1;
       ++byte;
       msb = 7;

@@ -27,10 +27,8 @@ TxScheduler::TxScheduler(const CanConfig& config) {
               .next_due_ns = 0};
     // Unmapped signals go out at their start value (GenSigStartValue is raw).
     for (std::size_t i = 0; i < def.signals.size(); ++i) {
-      m.physical.push_back(m.codec.signal(i).raw_to_physical(
-          m.codec.signal(i).physical_to_raw(def.signals[i].start_value_raw *
-                                                def.signals[i].factor +
-                                            def.signals[i].offset)));
+      m.physical.push_back(m.codec.signal(i).raw_to_physical(m.codec.signal(i).physical_to_raw(
+          def.signals[i].start_value_raw * def.signals[i].factor + def.signals[i].offset)));
       if (def.signals[i].mux_role == dbc::MuxRole::kMultiplexed &&
           std::find(m.mux_pages.begin(), m.mux_pages.end(), def.signals[i].mux_value) ==
               m.mux_pages.end()) {
@@ -69,8 +67,8 @@ void TxScheduler::encode(std::size_t i, const model::Signals& signals, TxFrame& 
   }
   const int mux = m.codec.multiplexor_index();
   if (mux >= 0 && !m.mux_pages.empty()) {
-    m.physical[static_cast<std::size_t>(mux)] = m.codec.signal(static_cast<std::size_t>(mux))
-                                                    .raw_to_physical(m.mux_pages[m.next_page]);
+    m.physical[static_cast<std::size_t>(mux)] =
+        m.codec.signal(static_cast<std::size_t>(mux)).raw_to_physical(m.mux_pages[m.next_page]);
     m.next_page = (m.next_page + 1) % m.mux_pages.size();
   }
   frame.id = m.id;

@@ -10,8 +10,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <span>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "io/can/dbc/can_mapping.h"
@@ -43,8 +43,8 @@ class TxScheduler {
   /// call). After an overrun a message is sent once, not in a burst, and its schedule skips to
   /// the next slot after now_ns on the same phase grid. Counts clamped values in
   /// counters.out_of_range (frames_sent is the transport's business).
-  std::size_t due_frames(std::int64_t now_ns, const model::Signals& signals,
-                         std::span<TxFrame> out, io::IoCounters& counters);
+  std::size_t due_frames(std::int64_t now_ns, const model::Signals& signals, std::span<TxFrame> out,
+                         io::IoCounters& counters);
 
   /// Encodes message i now, regardless of schedule (advances its counter). For tests/tools.
   void encode(std::size_t i, const model::Signals& signals, TxFrame& frame,
@@ -59,7 +59,7 @@ class TxScheduler {
     bool extended = false;
     std::uint32_t length_bytes = 0;
     dbc::MessageCodec codec;
-    std::vector<double> physical;   ///< per DBC signal, start values preset
+    std::vector<double> physical;  ///< per DBC signal, start values preset
     std::vector<SignalBinding> bound;
     std::vector<double> minimum, maximum;  ///< per bound signal
     std::vector<bool> clamp;

@@ -30,7 +30,7 @@ TEST(CanMapping, ExampleMappingLoads) {
   EXPECT_EQ(eps.signals[0].model, model::Signal::kAssistTorque);
   const MessageBinding& esc = c.mapping.rx[1];
   EXPECT_EQ(esc.checksum->type, ChecksumType::kXor);
-  EXPECT_EQ(esc.signals[0].scale, 1e5);  // bar -> Pa
+  EXPECT_EQ(esc.signals[0].scale, 1e5);               // bar -> Pa
   EXPECT_EQ(c.mapping.rx[2].timeout_ns, 60'000'000);  // explicit timeout_ms
   const MessageBinding& swa = c.mapping.tx[0];
   EXPECT_EQ(swa.period_ns, 10'000'000);
@@ -59,18 +59,22 @@ class CanMappingErrors : public ::testing::Test {
 TEST_F(CanMappingErrors, UnknownNamesAndBadValuesNameTheLine) {
   EXPECT_THAT(error_of("[[rx]]\nmessage = \"Nope\"\n"),
               HasSubstr(":3: [can mapping].rx[0] message: no message 'Nope'"));
-  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\ndbc = \"X\"\n"
-                       "model = \"assist_torque_nm\"\n"),
-              HasSubstr(":5: [can mapping].rx[0].signal[0] dbc: no signal 'X' in message EPS_Status"));
-  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\ndbc = \"EPS_MotorTorque\"\n"
-                       "model = \"assist_torque\"\n"),
-              HasSubstr(":6: [can mapping].rx[0].signal[0] model: no model signal 'assist_torque'"));
-  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\ndbc = \"EPS_MotorTorque\"\n"
-                       "model = \"vehicle_speed_mps\"\n"),
-              HasSubstr("is a model output"));
-  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\ndbc = \"EPS_MotorTorque\"\n"
-                       "model = \"assist_torque_nm\"\nconvert = \"furlongs\"\n"),
-              HasSubstr(":7: [can mapping].rx[0].signal[0] convert"));
+  EXPECT_THAT(
+      error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\ndbc = \"X\"\n"
+               "model = \"assist_torque_nm\"\n"),
+      HasSubstr(":5: [can mapping].rx[0].signal[0] dbc: no signal 'X' in message EPS_Status"));
+  EXPECT_THAT(
+      error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\ndbc = \"EPS_MotorTorque\"\n"
+               "model = \"assist_torque\"\n"),
+      HasSubstr(":6: [can mapping].rx[0].signal[0] model: no model signal 'assist_torque'"));
+  EXPECT_THAT(
+      error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\ndbc = \"EPS_MotorTorque\"\n"
+               "model = \"vehicle_speed_mps\"\n"),
+      HasSubstr("is a model output"));
+  EXPECT_THAT(
+      error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\ndbc = \"EPS_MotorTorque\"\n"
+               "model = \"assist_torque_nm\"\nconvert = \"furlongs\"\n"),
+      HasSubstr(":7: [can mapping].rx[0].signal[0] convert"));
   EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
                        "checksum = { signal = \"EPS_MotorTorque\" }\n"),
               HasSubstr("must be a plain 8-bit integer"));

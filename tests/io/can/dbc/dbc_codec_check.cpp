@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
         bytes.push_back(static_cast<std::uint8_t>(std::stoul(hex.substr(i, 2), nullptr, 16)));
       }
       bool present[64 * 8] = {};
-      if (!codec.decode(bytes.data(), bytes.size(), physical, std::span<bool>(present, physical.size()))) {
+      if (!codec.decode(bytes.data(), bytes.size(), physical,
+                        std::span<bool>(present, physical.size()))) {
         std::cout << "error short frame" << std::endl;
         continue;
       }
@@ -62,7 +63,8 @@ int main(int argc, char** argv) {
         const auto eq = pair.find('=');
         const std::string signal = pair.substr(0, eq);
         for (std::size_t i = 0; i < m->signals.size(); ++i) {
-          if (m->signals[i].name == signal) physical[i] = std::strtod(pair.c_str() + eq + 1, nullptr);
+          if (m->signals[i].name == signal)
+            physical[i] = std::strtod(pair.c_str() + eq + 1, nullptr);
         }
       }
       std::vector<std::uint8_t> bytes(m->length_bytes);

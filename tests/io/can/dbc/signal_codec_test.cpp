@@ -130,7 +130,8 @@ TEST(MessageCodec, ExampleDatabaseRoundTripWithoutAllocation) {
     bool present[64];
     std::array<std::uint8_t, 64> frame{}, again{};
     for (int round = 0; round < 200; ++round) {
-      for (std::uint32_t b = 0; b < m.length_bytes; ++b) frame[b] = static_cast<std::uint8_t>(rng());
+      for (std::uint32_t b = 0; b < m.length_bytes; ++b)
+        frame[b] = static_cast<std::uint8_t>(rng());
       for (std::size_t i = 0; i < m.signals.size(); ++i) {
         if (m.signals[i].value_type == ValueType::kFloat32) {
           codec.signal(i).insert_raw(0x3F800000u + (rng() & 0xFFFF), frame.data());  // finite
@@ -145,13 +146,15 @@ TEST(MessageCodec, ExampleDatabaseRoundTripWithoutAllocation) {
       codec.encode(physical, again.data());
       EXPECT_EQ(allocations.count(), 0u);
       // Every bit covered by a present signal must come back identical.
-      const std::uint64_t mux = codec.multiplexor_index() >= 0
-                                    ? codec.signal(static_cast<std::size_t>(codec.multiplexor_index()))
-                                          .extract_raw(frame.data())
-                                    : 0;
+      const std::uint64_t mux =
+          codec.multiplexor_index() >= 0
+              ? codec.signal(static_cast<std::size_t>(codec.multiplexor_index()))
+                    .extract_raw(frame.data())
+              : 0;
       for (std::size_t i = 0; i < m.signals.size(); ++i) {
         if (!codec.present(i, mux)) continue;
-        EXPECT_EQ(codec.signal(i).extract_raw(again.data()), codec.signal(i).extract_raw(frame.data()))
+        EXPECT_EQ(codec.signal(i).extract_raw(again.data()),
+                  codec.signal(i).extract_raw(frame.data()))
             << m.name << "." << m.signals[i].name;
       }
     }
