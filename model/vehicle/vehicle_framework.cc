@@ -47,6 +47,8 @@ VehicleFramework::VehicleFramework(VehicleBus& bus, const VehicleParams& p)
   y_ = Vector::Zero(n_);
   z_ = Vector::Zero(n_);
   y_(2) = c.cg_height_m;
+  row_a_ = Vector::Zero(n_);
+  row_b_ = Vector::Zero(n_);
 }
 
 void VehicleFramework::kinematics_inverse(const Vector& y, Matrix& k_inv) const noexcept {
@@ -81,19 +83,27 @@ void VehicleFramework::mass_matrix(const Vector& y, Matrix& m) const noexcept {
 }
 
 WheelContact VehicleFramework::contact(const Vector& y, const Vector& z, int i) const noexcept {
+  return contact(body_to_road(y(3), y(4), y(5)), y, z, i);
+}
+
+WheelForces VehicleFramework::wheel_forces(const Vector& y, const Vector& z, int i) const noexcept {
+  return wheel_forces(body_to_road(y(3), y(4), y(5)), y, z, i);
+}
+
+WheelContact VehicleFramework::contact(const Mat3& rot, const Vector& y, const Vector& z, int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  return wheel_contact(body_to_road(y(3), y(4), y(5)), y.head<3>(), z.segment<3>(0),
+  return wheel_contact(rot, y.head<3>(), z.segment<3>(0),
                        z.segment<3>(3), mount_[k], y(6 + i), z(6 + i), bus_.wheels[k].steer_rad,
                        p_.axles[k / 2].tire.radius_unloaded_m);
 }
 
-WheelForces VehicleFramework::wheel_forces(const Vector& y, const Vector& z, int i) const noexcept {
+WheelForces VehicleFramework::wheel_forces(const Mat3& rot, const Vector& y, const Vector& z, int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
   const AxleParams& a = p_.axles[k / 2];
   const TireParams& t = a.tire;
   const WheelBus& w = bus_.wheels[k];
   WheelForces out;
-  out.contact = contact(y, z, i);
+  out.contact = contact(rot, y, z, i);
   const WheelContact& c = out.contact;
   out.load_n = vertical_tire_force_n(c.penetration_m, c.penetration_rate_mps,
                                      t.vertical_stiffness_npm, t.vertical_damping_nspm);
@@ -151,7 +161,7 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
     const Vec3 r = mount_[k] + Vec3(0, 0, y(6 + i));
     const Vec3 a0 = w.cross(v) + w.cross(w.cross(r)) + 2.0 * w.cross(Vec3(0, 0, sd));
     const Vec3 fw = mw * (g - a0);
-    const WheelForces wf = wheel_forces(y, z, i);
+    const WheelForces wf = wheel_forces(rot, y, z, i);
     const WheelContact& c = wf.contact;
     // tire force acting at the wheel centre (the spin DOF carries the moment r F_x) plus the
     // reactions of the drive and brake torques on the chassis
@@ -165,6 +175,66 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
   }
   q.segment<3>(0) = ft;
   q.segment<3>(3) = tr;
+}
+
+bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
+                                       Matrix& dq_dz) const noexcept {
+  dq_dy.setZero(n_, n_);
+  dq_dz.setZero(n_, n_);
+  const Mat3 rot = body_to_road(y(3), y(4), y(5));
+  const Mat3 e_inv = body_rates_from_euler_rates(y(4), y(5));  // K_BB angle part
+  Vector& a = row_a_;
+  Vector& b = row_b_;
+  for (int i = 0; i < wheel_count_; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const AxleParams& ax = p_.axles[k / 2];
+    const TireParams& t = ax.tire;
+    const Eigen::Index h = 6 + i;
+    // suspension on the hub coordinates (relative DOF: acts on q_h only)
+    const double s = y(h);
+    double stiff = ax.spring_stiffness_npm + ax.anti_roll_stiffness_npm;
+    if (s > ax.bump_stop_travel_m || s < -ax.rebound_stop_travel_m) stiff += ax.stop_stiffness_npm;
+    dq_dy(h, h) -= stiff;
+    dq_dy(h, 6 + (i ^ 1)) += ax.anti_roll_stiffness_npm;
+    dq_dz(h, h) -= z(h) > 0 ? ax.damper_bump_nspm : ax.damper_rebound_nspm;
+    // tire: force rows at the wheel centre (J_C^T u), velocity rows at the contact (u^T J_P)
+    const WheelContact c = contact(rot, y, z, i);
+    if (c.penetration_m <= 0) continue;
+    const Vec3 centre = mount_[k] + Vec3(0, 0, y(h));
+    const WheelBus& w = bus_.wheels[k];
+    const double r = dynamic_radius_m(t.radius_unloaded_m, c.penetration_m);
+    const TmeasySlip slip = tmeasy_slip(w.curves, c.vx_mps, c.vy_mps, w.spin_radps, r, t.velocity_floor_mps);
+    const double rolling = r * std::abs(w.spin_radps);
+    // d F / d v along each direction: vertical damping; eq. (24) damping paths at fixed f
+    const double dx = t.longitudinal_damping_nspm * slip.f_per_slip /
+                      (t.longitudinal_damping_nspm * rolling * w.curves.normalize_x + slip.f_per_slip + 1e-9);
+    const double dy = t.lateral_damping_nspm * slip.f_per_slip /
+                      (t.lateral_damping_nspm * rolling * w.curves.normalize_y + slip.f_per_slip + 1e-9);
+    const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};
+    const double damp[3] = {t.vertical_damping_nspm, dx, dy};
+    for (int d = 0; d < 3; ++d) {
+      const Vec3& u = *dirs[d];
+      a.setZero();
+      b.setZero();
+      a.segment<3>(0) = u;
+      a.segment<3>(3) = centre.cross(u);
+      a(h) = u.z();
+      b.segment<3>(0) = u;
+      b.segment<3>(3) = c.lever_m.cross(u);
+      b(h) = u.z();
+      dq_dz.noalias() -= damp[d] * a * b.transpose();
+      if (d == 0) {
+        // penetration rate = -n^T J_P z, and y' = K^-1 z: d pen / d y = -n^T J_P K
+        Vector& bk = b;
+        const Vec3 bt = rot * bk.segment<3>(0);  // (b_t^T R^T)^T
+        const Vec3 br = e_inv.transpose() * bk.segment<3>(3);
+        bk.segment<3>(0) = bt;
+        bk.segment<3>(3) = br;
+        dq_dy.noalias() -= t.vertical_stiffness_npm * a * bk.transpose();
+      }
+    }
+  }
+  return true;
 }
 
 }  // namespace rig::model::vehicle

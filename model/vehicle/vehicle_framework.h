@@ -36,11 +36,19 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   void kinematics_inverse(const Vector& y, Matrix& k_inv) const noexcept override;
   void mass_matrix(const Vector& y, Matrix& m) const noexcept override;
   void applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept override;
+  /// The stiff parts only (method.md sec. 6): suspension springs, dampers, stops and anti-roll
+  /// bars on the hub coordinates; tire vertical stiffness and damping; the tire's longitudinal
+  /// and lateral damping paths (eq. 24, at fixed f). Each is a scalar times a product of
+  /// Jacobian rows (J_C^T u)(u^T J_P). Gravity, gyroscopic and aerodynamic terms stay explicit.
+  bool force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
+                       Matrix& dq_dz) const noexcept override;
 
   /// Forces of wheel i at state (y, z) with the newest tire, wheel and steering states.
   [[nodiscard]] WheelForces wheel_forces(const Vector& y, const Vector& z, int i) const noexcept;
+  [[nodiscard]] WheelForces wheel_forces(const Mat3& rot, const Vector& y, const Vector& z, int i) const noexcept;
   /// Contact kinematics of wheel i at (y, z).
   [[nodiscard]] WheelContact contact(const Vector& y, const Vector& z, int i) const noexcept;
+  [[nodiscard]] WheelContact contact(const Mat3& rot, const Vector& y, const Vector& z, int i) const noexcept;
   [[nodiscard]] int wheel_count() const noexcept { return wheel_count_; }
   [[nodiscard]] int axle_of(int wheel) const noexcept { return axle_of_[static_cast<std::size_t>(wheel)]; }
   [[nodiscard]] const Vec3& mount(int wheel) const noexcept { return mount_[static_cast<std::size_t>(wheel)]; }
@@ -64,6 +72,7 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   Vec3 gravity_road_;
   Vector y_;
   Vector z_;
+  mutable Vector row_a_, row_b_;  ///< Jacobian rows (workspace, sized at construction)
 };
 
 }  // namespace rig::model::vehicle
