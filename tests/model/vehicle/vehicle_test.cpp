@@ -3,7 +3,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -300,6 +304,49 @@ TEST(Vehicle, AnalyticPartialJacobiansMatchFiniteDifferences) {
   fd_jacobians<2>(st, st.coordinates(), st.speeds(), gy, gz);
   EXPECT_LT((Eigen::MatrixXd(sy2) - gy).norm(), 1e-3 * gy.norm()) << sy2 << "\n" << gy;
   EXPECT_LT((Eigen::MatrixXd(sz2) - gz).norm(), 1e-3 * gz.norm()) << sz2 << "\n" << gz;
+}
+
+TEST(Vehicle, TruckStaticEquilibriumAndGradeHoldAtOneAndTwoMilliseconds) {
+  for (double h : {1e-3, 2e-3}) {
+    VehicleParams p = vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml");
+    VehicleModel flat(p, h);
+    Signals s = driver_inputs();
+    s[Signal::kGearRequest] = 0;
+    run(flat, s, 3.0, nullptr);
+    double total = 0;
+    for (int i = 0; i < 6; ++i) total += flat.wheel_load_n(i);
+    const double mg = flat.framework().total_mass_kg() * 9.81;
+    EXPECT_NEAR(total, mg, 0.005 * mg) << "h = " << h;
+    p.road.grade = 0.2;
+    VehicleModel hill(p, h);
+    s[Signal::kBrakePressureFront] = 8e5;
+    s[Signal::kBrakePressureRear] = 8e5;
+    run(hill, s, 2.0, nullptr);
+    const double x0 = hill.framework().coordinates()(0);
+    run(hill, s, 10.0, nullptr);
+    const double creep = std::abs(hill.framework().coordinates()(0) - x0);
+    std::printf("truck h=%.0f ms: loads %.0f N (m g %.0f N), creep on 20 %% over 10 s %.3g mm\n", h * 1e3, total,
+                mg, creep * 1e3);
+    EXPECT_LT(creep, 1e-3);
+  }
+}
+
+TEST(VehicleConfig, UnknownKeyIsAnErrorWithFileAndLine) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rig_vehicle_config_test";
+  std::filesystem::create_directories(dir);
+  std::ifstream in(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto pos = text.find("cg_height_m");
+  text.insert(pos, "cg_hieght_m = 0.5\n");
+  const auto file = dir / "typo.toml";
+  std::ofstream(file) << text;
+  try {
+    (void)vehicle_config::load_vehicle_file(file);
+    FAIL() << "no error";
+  } catch (const io::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("typo.toml:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("cg_hieght_m"), std::string::npos) << e.what();
+  }
 }
 }  // namespace
 }  // namespace rig::model::vehicle
