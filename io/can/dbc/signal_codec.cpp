@@ -13,7 +13,8 @@ SignalCodec::SignalCodec(const SignalDef& signal)
       is_signed_(signal.is_signed),
       value_type_(signal.value_type),
       factor_(signal.factor),
-      offset_(signal.offset) {
+      offset_(signal.offset),
+      raw_limit_(std::ldexp(1.0, static_cast<int>(length_bits_) - (is_signed_ ? 1 : 0))) {
   // Split the signal into byte segments, LSB of the raw value first for Intel and MSB first for
   // Motorola; either way each segment records where its bits go in the raw value.
   std::uint32_t remaining = length_bits_;
@@ -112,8 +113,8 @@ std::uint64_t SignalCodec::physical_to_raw(double physical) const noexcept {
   if (std::isnan(scaled)) return 0;
   if (is_signed_) {
     // Saturate to [-2^(n-1), 2^(n-1) - 1] before converting (no UB on huge values).
-    const double lo = -std::ldexp(1.0, static_cast<int>(length_bits_) - 1);
-    const double hi_exclusive = std::ldexp(1.0, static_cast<int>(length_bits_) - 1);
+    const double lo = -raw_limit_;
+    const double hi_exclusive = raw_limit_;
     std::int64_t v = 0;
     if (scaled <= lo) {
       v = length_bits_ >= 64 ? std::numeric_limits<std::int64_t>::min()
@@ -126,7 +127,7 @@ std::uint64_t SignalCodec::physical_to_raw(double physical) const noexcept {
     }
     return static_cast<std::uint64_t>(v) & mask;
   }
-  const double hi_exclusive = std::ldexp(1.0, static_cast<int>(length_bits_));
+  const double hi_exclusive = raw_limit_;
   if (scaled <= 0.0) return 0;
   const double rounded = std::round(scaled);
   if (rounded >= hi_exclusive) return mask;

@@ -69,6 +69,7 @@ class SignalCodec {
   ValueType value_type_ = ValueType::kInteger;
   double factor_ = 1.0;
   double offset_ = 0.0;
+  double raw_limit_ = 2.0;  ///< 2^length (unsigned) or 2^(length-1) (signed): exclusive bound
 };
 
 /// Plans for every signal of one message, in the order of MessageDef::signals. Built at load
