@@ -1,0 +1,41 @@
+#include "io/can/bridge/can_settings.h"
+
+#include "io/can/bridge/can_bridge.h"
+#include "io/can/dbc/dbc_parser.h"
+
+namespace rig::io::can {
+
+CanSettings read_can_settings(StrictTable& can_table) {
+  CanSettings s;
+  s.interface = can_table.string("interface", "vcan0");
+  if (s.interface.empty() || s.interface.size() > 15) {
+    throw can_table.error("interface", "interface name must have 1..15 characters");
+  }
+  s.mapping_file = can_table.existing_path("mapping");
+  if (can_table.has("dbc")) s.dbc_file = can_table.existing_path("dbc");
+  s.fd = can_table.boolean("fd", true);
+  s.kernel_filter = can_table.boolean("kernel_filter", false);
+  can_table.finish();
+  return s;
+}
+
+std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings) {
+  CanConfig config;
+  if (settings.dbc_file) {
+    config.database = dbc::load_dbc(*settings.dbc_file);
+    toml::table root = load_toml_file(settings.mapping_file);
+    StrictTable table(root, settings.mapping_file, "mapping");
+    (void)table.string("dbc", "");  // superseded by [can] dbc
+    config.mapping = parse_can_mapping(table, config.database);
+    table.finish();
+  } else {
+    config = load_can_config(settings.mapping_file);
+  }
+  TransportSettings transport;
+  transport.interface = settings.interface;
+  transport.fd = settings.fd;
+  return std::make_unique<CanBridge>(std::move(config), std::move(transport),
+                                     settings.kernel_filter);
+}
+
+}  // namespace rig::io::can

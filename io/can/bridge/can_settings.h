@@ -1,0 +1,41 @@
+#pragma once
+/// @file
+/// The [can] section of the rig configuration, and the factory the executive calls.
+///
+///     [can]
+///     interface = "vcan0"                    # SocketCAN interface (--can overrides; "none" = off)
+///     mapping = "can/steering-bench.toml"    # mapping file (relative to the config file)
+///     dbc = "can/steering-bench.dbc"         # optional: overrides the mapping file's `dbc`
+///     fd = true                              # optional: accept/send CAN FD frames
+///     kernel_filter = false                  # optional: CAN_RAW_FILTER on the RX message ids
+///
+/// kernel_filter = false (default) lets every frame through so unknown ids are counted
+/// (unknown_frames); true spares the RT thread on a busy real bus, and unknown ids are then
+/// dropped by the kernel without being counted.
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "io/config/strict_table.h"
+#include "io/cycle_io.h"
+
+namespace rig::io::can {
+
+struct CanSettings {
+  std::string interface = "vcan0";
+  std::filesystem::path mapping_file;
+  std::optional<std::filesystem::path> dbc_file;  ///< overrides the mapping's `dbc` key
+  bool fd = true;
+  bool kernel_filter = false;
+};
+
+/// Reads a [can] table (load time; ConfigError with file:line on bad input). Calls finish().
+CanSettings read_can_settings(StrictTable& can_table);
+
+/// Loads DBC and mapping, opens the transport. Throws ConfigError (bad DBC/mapping) or
+/// TransportError (no SocketCAN, unknown interface), both with a clear message.
+std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings);
+
+}  // namespace rig::io::can
