@@ -1,0 +1,51 @@
+#pragma once
+/// @file
+/// A closed-loop driver: a PI speed controller (throttle / brake pressure) plus a preview
+/// (pure-pursuit) path follower on the steering wheel angle. Writes only the inputs whose
+/// source is SignalSource::kDriver. Built at load time; update() never allocates.
+
+#include <vector>
+
+#include "rig/driver/driver.h"
+
+namespace rig::driver {
+
+struct PathPoint {
+  double x_m = 0;
+  double y_m = 0;
+};
+
+struct PathDriverParams {
+  std::vector<PathPoint> path;        ///< centreline in the road frame, x increasing
+  double target_speed_mps = 60 / 3.6;
+  double preview_time_s = 0.9;        ///< look-ahead distance = max(min, v T)
+  double preview_min_m = 6.0;
+  double wheelbase_m = 2.8;
+  double steering_ratio = 16.0;       ///< steering wheel angle / road wheel angle
+  double max_steering_wheel_rad = 8.0;
+  double speed_gain_per_mps = 0.3;    ///< throttle per m/s of speed error
+  double speed_integral_per_m = 0.05; ///< throttle per m of integrated speed error
+  double brake_gain_pa_per_mps = 1.5e6;
+};
+
+/// ISO 3888-1 double lane change centreline (sections 15 / 30 / 25 / 25 / 15 m + run-out),
+/// lane offset 3.5 m, smooth (cosine) transitions; starts at x = start_x_m.
+std::vector<PathPoint> iso3888_1_centreline(double start_x_m, double lane_offset_m = 3.5);
+
+class PathDriver final : public Driver {
+ public:
+  explicit PathDriver(PathDriverParams params);
+  void update(double sim_time_s, model::Signals& signals) noexcept override;
+  /// Lateral offset of the vehicle CG from the path at its x (last update) [m].
+  [[nodiscard]] double lateral_offset_m() const noexcept { return lateral_offset_m_; }
+  /// Path y at road x (linear between points; clamped at the ends).
+  [[nodiscard]] double path_y(double x_m) const noexcept;
+
+ private:
+  PathDriverParams p_;
+  double integral_ = 0;
+  double last_time_s_ = 0;
+  double lateral_offset_m_ = 0;
+};
+
+}  // namespace rig::driver
