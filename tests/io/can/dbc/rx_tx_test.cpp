@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "io/can/dbc/dbc_parser.h"
 #include "io/can/dbc/rx_processor.h"
 #include "io/can/dbc/tx_scheduler.h"
 #include "tests/support/alloc_counter.h"
@@ -270,6 +271,62 @@ TEST_F(TxTest, ValuesConvertedAndClamped) {
   EXPECT_DOUBLE_EQ(decode(find("RIG_Chassis"), "EngineSpeed"), 2000.0);
   EXPECT_DOUBLE_EQ(decode(find("RIG_Chassis"), "PositionX"), -1234.5678);
   EXPECT_DOUBLE_EQ(decode(find("RIG_Chassis"), "Gear"), 0.0);
+}
+
+}  // namespace
+}  // namespace rig::io::can
+
+namespace rig::io::can {
+namespace {
+
+/// A multiplexed message sent by the rig: pages go out round-robin, each frame carries only its
+/// page's signals; received, only the present page's signal is written.
+TEST(TxMultiplexed, PagesRoundRobinAndRxPerPage) {
+  CanConfig c;
+  c.database = dbc::parse_dbc(R"(BO_ 16 Mux: 4 RIG
+ SG_ Page M : 0|2@1+ (1,0) [0|3] "" ECU
+ SG_ Speed m0 : 8|16@1+ (0.01,0) [0|600] "km/h" ECU
+ SG_ Yaw m2 : 8|16@1- (0.1,0) [-300|300] "deg/s" ECU
+BA_DEF_ BO_ "GenMsgCycleTime" INT 0 1000;
+BA_ "GenMsgCycleTime" BO_ 16 10;
+)",
+                              "mux.dbc");
+  MessageBinding b;
+  b.dbc_message = 0;
+  b.period_ns = 10'000'000;
+  b.timeout_ns = 30'000'000;
+  b.signals.push_back(
+      SignalBinding{.dbc_signal = 1, .model = Signal::kVehicleSpeed, .scale = 1 / 3.6});
+  b.signals.push_back(
+      SignalBinding{.dbc_signal = 2, .model = Signal::kYawRate, .scale = std::numbers::pi / 180});
+  c.mapping.tx.push_back(b);
+  TxScheduler tx(c);
+  model::Signals out;
+  out[Signal::kVehicleSpeed] = 10.0;  // 36 km/h
+  out[Signal::kYawRate] = -0.1;       // -5.73 deg/s
+  IoCounters counters;
+  TxFrame f0, f1, f2;
+  tx.encode(0, out, f0, counters);
+  tx.encode(0, out, f1, counters);
+  tx.encode(0, out, f2, counters);
+  EXPECT_EQ(f0.data[0] & 3, 0);
+  EXPECT_EQ(f0.data[1] | (f0.data[2] << 8), 3600);  // 36 km/h / 0.01
+  EXPECT_EQ(f1.data[0] & 3, 2);
+  EXPECT_EQ(static_cast<std::int16_t>(f1.data[1] | (f1.data[2] << 8)), -57);  // -5.73 / 0.1
+  EXPECT_EQ(f2.data[0] & 3, 0);
+
+  // The same mapping as RX (model outputs allowed here: built by hand, not from TOML).
+  CanConfig rc = c;
+  rc.mapping.rx = rc.mapping.tx;
+  rc.mapping.tx.clear();
+  RxProcessor rx(rc);
+  model::Signals in;
+  rx.reset(0, in);
+  EXPECT_EQ(rx.on_frame(16, false, f1.data.data(), 4, 1, in, counters), RxResult::kAccepted);
+  EXPECT_NEAR(in[Signal::kYawRate], -5.7 * std::numbers::pi / 180, 1e-12);
+  EXPECT_FALSE(in.valid[model::index(Signal::kVehicleSpeed)]);  // page 0 not seen yet
+  EXPECT_EQ(rx.on_frame(16, false, f0.data.data(), 4, 2, in, counters), RxResult::kAccepted);
+  EXPECT_NEAR(in[Signal::kVehicleSpeed], 10.0, 1e-12);
 }
 
 }  // namespace
