@@ -96,7 +96,7 @@ std::size_t TxScheduler::due_frames(std::int64_t now_ns, const model::Signals& s
   std::size_t n = 0;
   for (std::size_t i = 0; i < messages_.size() && n < out.size(); ++i) {
     Message& m = messages_[i];
-    if (now_ns < m.next_due_ns) continue;
+    if (now_ns < m.next_due_ns || m.period_ns <= 0) continue;
     encode(i, signals, out[n++], counters);
     // Next slot on the grid loop_start + k * period strictly after now (no burst after overrun).
     const std::int64_t k = (now_ns - loop_start_ns_) / m.period_ns + 1;
