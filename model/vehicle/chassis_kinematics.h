@@ -43,7 +43,7 @@ inline Mat3 body_rates_from_euler_rates(double pitch, double roll) noexcept {
   const double cp = std::cos(pitch), sp = std::sin(pitch);
   const double cr = std::cos(roll), sr = std::sin(roll);
   Mat3 e;
-  e << -sp, 0, 1,  //
+  e << -sp, 0, 1,      //
       cp * sr, cr, 0,  //
       cp * cr, -sr, 0;
   return e;

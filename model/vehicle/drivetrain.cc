@@ -19,10 +19,13 @@ double interpolate(const std::vector<double>& xs, const std::vector<double>& ys,
 
 double engine_torque_nm(const DrivetrainParams& p, double throttle, double speed_radps) noexcept {
   // idle control: proportional throttle below idle speed; fuel cut above max speed
-  const double idle = std::clamp(p.idle_gain_per_radps * (p.idle_speed_radps - speed_radps), 0.0, 1.0);
+  const double idle =
+      std::clamp(p.idle_gain_per_radps * (p.idle_speed_radps - speed_radps), 0.0, 1.0);
   double thr = std::max(std::clamp(throttle, 0.0, 1.0), idle);
   if (speed_radps > p.max_speed_radps) thr = 0;
-  const double full = speed_radps > 0 ? interpolate(p.full_load_speed_radps, p.full_load_torque_nm, speed_radps) : 0.0;
+  const double full = speed_radps > 0
+                          ? interpolate(p.full_load_speed_radps, p.full_load_torque_nm, speed_radps)
+                          : 0.0;
   const double drag = (p.drag_torque_nm + p.drag_torque_per_speed_nms * std::abs(speed_radps)) *
                       std::tanh(speed_radps / 5.0);
   return thr * full - (1.0 - thr) * drag;
@@ -40,10 +43,11 @@ double Drivetrain::coupling_torque_nm(double engine_radps, double carrier_radps)
   if (bus_.total_ratio == 0) return 0.0;
   const double turbine = bus_.total_ratio * carrier_radps;
   const double slip = engine_radps - turbine;
-  const double lock = std::clamp((std::abs(turbine) - p_.lockup_start_radps) /
-                                     (p_.lockup_full_radps - p_.lockup_start_radps),
-                                 0.0, 1.0);
-  return p_.converter_capacity_nms2 * std::abs(engine_radps) * slip + lock * p_.lockup_damping_nms * slip;
+  const double lock = std::clamp(
+      (std::abs(turbine) - p_.lockup_start_radps) / (p_.lockup_full_radps - p_.lockup_start_radps),
+      0.0, 1.0);
+  return p_.converter_capacity_nms2 * std::abs(engine_radps) * slip +
+         lock * p_.lockup_damping_nms * slip;
 }
 
 void Drivetrain::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {

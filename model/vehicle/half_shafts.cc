@@ -14,7 +14,8 @@ HalfShafts::HalfShafts(VehicleBus& bus, const DrivetrainParams& p,
 double HalfShafts::shaft_torque_nm(const Vector& s, double carrier_radps) const noexcept {
   double sum_spin = 0;
   for (Eigen::Index i = 0; i < n_; ++i) {
-    sum_spin += bus_.wheels[static_cast<std::size_t>(wheels_[static_cast<std::size_t>(i)])].spin_radps;
+    sum_spin +=
+        bus_.wheels[static_cast<std::size_t>(wheels_[static_cast<std::size_t>(i)])].spin_radps;
   }
   const double n = static_cast<double>(n_);
   return (c_ * s.sum() + d_ * (n * carrier_radps - sum_spin)) / n;

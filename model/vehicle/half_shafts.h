@@ -17,8 +17,8 @@ namespace rig::model::vehicle {
 class HalfShafts final : public solver::ForceElement<Eigen::Dynamic> {
  public:
   /// @param driven_wheels indices of the driven wheels (at least one)
-  HalfShafts(VehicleBus& bus, const DrivetrainParams& p, const std::array<int, kMaxWheels>& driven_wheels,
-             int driven_count);
+  HalfShafts(VehicleBus& bus, const DrivetrainParams& p,
+             const std::array<int, kMaxWheels>& driven_wheels, int driven_count);
   [[nodiscard]] Eigen::Index state_size() const noexcept override { return n_; }
   [[nodiscard]] Vector& state() noexcept override { return s_; }
   [[nodiscard]] const Vector& state_const() const noexcept { return s_; }

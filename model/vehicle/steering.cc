@@ -26,7 +26,8 @@ void Steering::applied_forces(const Vector& y, const Vector& z, Vector& q) const
   const double tb = torsion_bar_torque_nm(y, z);
   double hand = bus_.hand_torque_cmd_nm;
   if (!p_.torque_input) {
-    hand = p_.robot_stiffness_nmpr * (bus_.steering_angle_cmd_rad - y(0)) - p_.robot_damping_nmspr * z(0);
+    hand = p_.robot_stiffness_nmpr * (bus_.steering_angle_cmd_rad - y(0)) -
+           p_.robot_damping_nmspr * z(0);
   }
   const double friction = p_.rack_friction_n * std::tanh(z(1) / p_.rack_friction_speed_mps);
   q(0) = hand - tb - p_.column_damping_nmspr * z(0);

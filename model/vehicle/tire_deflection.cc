@@ -43,8 +43,9 @@ void limit_deflection(const TireParams& tire, const TmeasyLoadCurves& c, double&
     ye = 0;
     return;
   }
-  const double rho = std::hypot(tire.longitudinal_stiffness_npm * xe / fxm,
-                                tire.lateral_stiffness_npm * ye / fym);
+  const double ux = tire.longitudinal_stiffness_npm * xe / fxm;
+  const double uy = tire.lateral_stiffness_npm * ye / fym;
+  const double rho = std::sqrt(ux * ux + uy * uy);
   if (rho > 1.0) {
     xe /= rho;
     ye /= rho;

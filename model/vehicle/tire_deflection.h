@@ -13,8 +13,8 @@ namespace rig::model::vehicle {
 /// Deflection rate of eq. (24) for one direction; also returns d(rate)/d(deflection).
 /// @param slip_speed v_x - r_D omega (or v_y laterally)
 inline double deflection_rate(double deflection_m, double slip_speed_mps, double rolling_mps,
-                              double normalize, double f_per_slip, double stiffness,
-                              double damping, double* d_rate_d_deflection = nullptr) noexcept {
+                              double normalize, double f_per_slip, double stiffness, double damping,
+                              double* d_rate_d_deflection = nullptr) noexcept {
   const double rs = rolling_mps * normalize;
   const double denom = damping * rs + f_per_slip + 1e-9;
   if (d_rate_d_deflection) *d_rate_d_deflection = -stiffness * rs / denom;
@@ -39,6 +39,7 @@ class TireDeflection final : public solver::ForceElement<2> {
 };
 
 /// Eq. (26), elliptic: scales (x_e, y_e) so that (c_x x_e / F_xM)^2 + (c_y y_e / F_yM)^2 <= 1.
-void limit_deflection(const TireParams& tire, const TmeasyLoadCurves& c, double& xe, double& ye) noexcept;
+void limit_deflection(const TireParams& tire, const TmeasyLoadCurves& c, double& xe,
+                      double& ye) noexcept;
 
 }  // namespace rig::model::vehicle

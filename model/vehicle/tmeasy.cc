@@ -6,10 +6,14 @@
 namespace rig::model::vehicle {
 namespace {
 
+// sqrt(a^2 + b^2) without glibc hypot's overflow care (our magnitudes are far from it): the
+// hot path evaluates this ~30 times per step.
+inline double norm2(double a, double b) { return std::sqrt(a * a + b * b); }
+
 // TMeasy's degressive load dependence: value(F_z) from the values at F_zN and 2 F_zN.
 double degressive(double at_nominal, double at_double, double load_ratio) {
-  return load_ratio * (2.0 * at_nominal - 0.5 * at_double -
-                       (at_nominal - 0.5 * at_double) * load_ratio);
+  return load_ratio *
+         (2.0 * at_nominal - 0.5 * at_double - (at_nominal - 0.5 * at_double) * load_ratio);
 }
 
 double linear(double at_nominal, double at_double, double load_ratio) {
@@ -22,7 +26,8 @@ TmeasyCurve at_load(const TmeasyCurve& n, const TmeasyCurve& d, double ratio, do
   c.max_force_n = mu * std::max(0.0, degressive(n.max_force_n, d.max_force_n, ratio));
   c.sliding_force_n = mu * std::max(0.0, degressive(n.sliding_force_n, d.sliding_force_n, ratio));
   c.slip_at_max = std::max(1e-3, linear(n.slip_at_max, d.slip_at_max, ratio));
-  c.slip_at_sliding = std::max(c.slip_at_max + 1e-3, linear(n.slip_at_sliding, d.slip_at_sliding, ratio));
+  c.slip_at_sliding =
+      std::max(c.slip_at_max + 1e-3, linear(n.slip_at_sliding, d.slip_at_sliding, ratio));
   return c;
 }
 
@@ -44,7 +49,7 @@ TmeasyLoadCurves tmeasy_curves(const TireParams& tire, double load_n, double mu)
 }
 
 double tmeasy_f_per_slip(const TmeasyLoadCurves& c, double slip_x, double slip_y) noexcept {
-  const double s = std::hypot(slip_x, slip_y);
+  const double s = norm2(slip_x, slip_y);
   double cx = 1.0;
   double cy = 0.0;
   if (s > 1e-12) {
@@ -53,13 +58,13 @@ double tmeasy_f_per_slip(const TmeasyLoadCurves& c, double slip_x, double slip_y
   }
   const double ax = c.normalize_x * cx;
   const double ay = c.normalize_y * cy;
-  const double df0 = std::hypot(c.x.initial_slope_n * ax, c.y.initial_slope_n * ay);
-  const double fm = std::hypot(c.x.max_force_n * cx, c.y.max_force_n * cy);
-  const double fs = std::hypot(c.x.sliding_force_n * cx, c.y.sliding_force_n * cy);
-  const double sm = std::hypot(c.x.slip_at_max / c.normalize_x * cx,
-                               c.y.slip_at_max / c.normalize_y * cy);
-  const double ss = std::hypot(c.x.slip_at_sliding / c.normalize_x * cx,
-                               c.y.slip_at_sliding / c.normalize_y * cy);
+  const double df0 = norm2(c.x.initial_slope_n * ax, c.y.initial_slope_n * ay);
+  const double fm = norm2(c.x.max_force_n * cx, c.y.max_force_n * cy);
+  const double fs = norm2(c.x.sliding_force_n * cx, c.y.sliding_force_n * cy);
+  const double sm =
+      norm2(c.x.slip_at_max / c.normalize_x * cx, c.y.slip_at_max / c.normalize_y * cy);
+  const double ss =
+      norm2(c.x.slip_at_sliding / c.normalize_x * cx, c.y.slip_at_sliding / c.normalize_y * cy);
   if (fm <= 0.0 || df0 <= 0.0) return 0.0;
   if (s <= sm) {
     const double sigma = s / sm;
@@ -77,7 +82,8 @@ TmeasySlip tmeasy_slip(const TmeasyLoadCurves& c, double vx_mps, double vy_mps, 
   const double rw = radius_dynamic_m * std::abs(spin_radps);
   TmeasySlip out;
   // eqs. (14-15)
-  out.slip_x = -(vx_mps - radius_dynamic_m * spin_radps) / (rw * c.normalize_x + velocity_floor_mps);
+  out.slip_x =
+      -(vx_mps - radius_dynamic_m * spin_radps) / (rw * c.normalize_x + velocity_floor_mps);
   out.slip_y = -vy_mps / (rw * c.normalize_y + velocity_floor_mps);
   out.f_per_slip = tmeasy_f_per_slip(c, out.slip_x, out.slip_y);
   return out;

@@ -18,8 +18,8 @@ struct TmeasyLoadCurves {
 
 /// The result of eqs. (14-17) at one kinematic state.
 struct TmeasySlip {
-  double slip_x = 0;    ///< s_x^N (normalized)
-  double slip_y = 0;    ///< s_y^N
+  double slip_x = 0;      ///< s_x^N (normalized)
+  double slip_y = 0;      ///< s_y^N
   double f_per_slip = 0;  ///< f(s) = F(s)/s [N], f(0) = dF0 of the slip direction
 };
 

@@ -28,7 +28,7 @@ struct WheelBus {
   double shaft_torque_nm = 0;    ///< half-shaft torque on the wheel
   double brake_capacity_nm = 0;  ///< from the wheel brake pressure
   double brake_pressure_pa = 0;
-  double brake_torque_nm = 0;    ///< applied brake torque (signed, on the wheel)
+  double brake_torque_nm = 0;  ///< applied brake torque (signed, on the wheel)
   // tire forces of the last framework step (for reports and the aligning torque)
   double force_x_n = 0;
   double force_y_n = 0;
@@ -43,7 +43,7 @@ struct VehicleBus {
   // drivetrain
   double throttle = 0;
   int gear = 0;
-  double total_ratio = 0;        ///< gear ratio x final drive (signed; 0 in neutral)
+  double total_ratio = 0;          ///< gear ratio x final drive (signed; 0 in neutral)
   double carrier_speed_radps = 0;  ///< differential input speed in wheel units
   double engine_torque_nm = 0;
   // steering
@@ -51,7 +51,7 @@ struct VehicleBus {
   double hand_torque_cmd_nm = 0;
   bool assist_from_input = false;
   double assist_input_nm = 0;
-  double assist_torque_nm = 0;   ///< applied (input or boost curve)
+  double assist_torque_nm = 0;  ///< applied (input or boost curve)
   double torsion_bar_torque_nm = 0;
   double rack_force_n = 0;
 };

@@ -19,8 +19,8 @@ VehicleFramework::VehicleFramework(VehicleBus& bus, const VehicleParams& p)
   gravity_road_ = Vec3(-g * std::sin(grade), -g * std::cos(grade) * std::sin(bank),
                        -g * std::cos(grade) * std::cos(bank));
   const auto& c = p.chassis;
-  inertia_ << c.inertia_kgm2[0], 0, -c.inertia_xz_kgm2, 0, c.inertia_kgm2[1], 0,
-      -c.inertia_xz_kgm2, 0, c.inertia_kgm2[2];
+  inertia_ << c.inertia_kgm2[0], 0, -c.inertia_xz_kgm2, 0, c.inertia_kgm2[1], 0, -c.inertia_xz_kgm2,
+      0, c.inertia_kgm2[2];
   total_mass_kg_ = c.mass_kg;
   // Static loads of the sprung mass on the springs (heave + pitch of a rigid body on linear
   // springs; the lever rule for two axles): the springs are preloaded so that the design
@@ -41,14 +41,14 @@ VehicleFramework::VehicleFramework(VehicleBus& bus, const VehicleParams& p)
     total_mass_kg_ += a.unsprung_mass_kg;
     preload_[k] = a.spring_stiffness_npm * (heave_pitch(0) - a.position_x_m * heave_pitch(1));
     const double tire_load = preload_[k] + a.unsprung_mass_kg * g;
-    const double centre_height = a.tire.radius_unloaded_m - tire_load / a.tire.vertical_stiffness_npm;
-    mount_[k] = Vec3(a.position_x_m, (i % 2 == 0 ? 0.5 : -0.5) * a.track_m, centre_height - c.cg_height_m);
+    const double centre_height =
+        a.tire.radius_unloaded_m - tire_load / a.tire.vertical_stiffness_npm;
+    mount_[k] =
+        Vec3(a.position_x_m, (i % 2 == 0 ? 0.5 : -0.5) * a.track_m, centre_height - c.cg_height_m);
   }
   y_ = Vector::Zero(n_);
   z_ = Vector::Zero(n_);
   y_(2) = c.cg_height_m;
-  row_a_ = Vector::Zero(n_);
-  row_b_ = Vector::Zero(n_);
 }
 
 void VehicleFramework::kinematics_inverse(const Vector& y, Matrix& k_inv) const noexcept {
@@ -90,14 +90,15 @@ WheelForces VehicleFramework::wheel_forces(const Vector& y, const Vector& z, int
   return wheel_forces(body_to_road(y(3), y(4), y(5)), y, z, i);
 }
 
-WheelContact VehicleFramework::contact(const Mat3& rot, const Vector& y, const Vector& z, int i) const noexcept {
+WheelContact VehicleFramework::contact(const Mat3& rot, const Vector& y, const Vector& z,
+                                       int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  return wheel_contact(rot, y.head<3>(), z.segment<3>(0),
-                       z.segment<3>(3), mount_[k], y(6 + i), z(6 + i), bus_.wheels[k].steer_rad,
-                       p_.axles[k / 2].tire.radius_unloaded_m);
+  return wheel_contact(rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3), mount_[k], y(6 + i),
+                       z(6 + i), bus_.wheels[k].steer_rad, p_.axles[k / 2].tire.radius_unloaded_m);
 }
 
-WheelForces VehicleFramework::wheel_forces(const Mat3& rot, const Vector& y, const Vector& z, int i) const noexcept {
+WheelForces VehicleFramework::wheel_forces(const Mat3& rot, const Vector& y, const Vector& z,
+                                           int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
   const AxleParams& a = p_.axles[k / 2];
   const TireParams& t = a.tire;
@@ -109,13 +110,15 @@ WheelForces VehicleFramework::wheel_forces(const Mat3& rot, const Vector& y, con
                                      t.vertical_stiffness_npm, t.vertical_damping_nspm);
   // Tire forces through the deflection states (eqs. 22, 24) with the newest x_e, y_e, w.
   const double r = dynamic_radius_m(t.radius_unloaded_m, c.penetration_m);
-  const TmeasySlip slip = tmeasy_slip(w.curves, c.vx_mps, c.vy_mps, w.spin_radps, r, t.velocity_floor_mps);
+  const TmeasySlip slip =
+      tmeasy_slip(w.curves, c.vx_mps, c.vy_mps, w.spin_radps, r, t.velocity_floor_mps);
   out.slip_x = slip.slip_x;
   out.slip_y = slip.slip_y;
   const double rolling = r * std::abs(w.spin_radps);
   const double xe = bus_.deflection_m[2 * k], ye = bus_.deflection_m[2 * k + 1];
-  const double xr = deflection_rate(xe, c.vx_mps - r * w.spin_radps, rolling, w.curves.normalize_x,
-                                    slip.f_per_slip, t.longitudinal_stiffness_npm, t.longitudinal_damping_nspm);
+  const double xr =
+      deflection_rate(xe, c.vx_mps - r * w.spin_radps, rolling, w.curves.normalize_x,
+                      slip.f_per_slip, t.longitudinal_stiffness_npm, t.longitudinal_damping_nspm);
   const double yr = deflection_rate(ye, c.vy_mps, rolling, w.curves.normalize_y, slip.f_per_slip,
                                     t.lateral_stiffness_npm, t.lateral_damping_nspm);
   double fx = t.longitudinal_stiffness_npm * xe + t.longitudinal_damping_nspm * xr;
@@ -126,7 +129,7 @@ WheelForces VehicleFramework::wheel_forces(const Mat3& rot, const Vector& y, con
     fx = 0;
     fy = 0;
   } else {
-    const double rho = std::hypot(fx / fxm, fy / fym);
+    const double rho = std::sqrt((fx / fxm) * (fx / fxm) + (fy / fym) * (fy / fym));
     if (rho > 1) {
       fx /= rho;
       fy /= rho;
@@ -136,7 +139,8 @@ WheelForces VehicleFramework::wheel_forces(const Mat3& rot, const Vector& y, con
   out.force_y_n = fy;
   // Suspension: preloaded spring, bump/rebound damper, stops, anti-roll bar (wheel rates).
   const double s = y(6 + i), sd = z(6 + i), s_other = y(6 + (i ^ 1));
-  double fs = preload_[k] + a.spring_stiffness_npm * s + (sd > 0 ? a.damper_bump_nspm : a.damper_rebound_nspm) * sd;
+  double fs = preload_[k] + a.spring_stiffness_npm * s +
+              (sd > 0 ? a.damper_bump_nspm : a.damper_rebound_nspm) * sd;
   if (s > a.bump_stop_travel_m) fs += a.stop_stiffness_npm * (s - a.bump_stop_travel_m);
   if (s < -a.rebound_stop_travel_m) fs += a.stop_stiffness_npm * (s + a.rebound_stop_travel_m);
   fs += a.anti_roll_stiffness_npm * (s - s_other);
@@ -183,8 +187,6 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
   dq_dz.setZero(n_, n_);
   const Mat3 rot = body_to_road(y(3), y(4), y(5));
   const Mat3 e_inv = body_rates_from_euler_rates(y(4), y(5));  // K_BB angle part
-  Vector& a = row_a_;
-  Vector& b = row_b_;
   for (int i = 0; i < wheel_count_; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const AxleParams& ax = p_.axles[k / 2];
@@ -203,34 +205,38 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
     const Vec3 centre = mount_[k] + Vec3(0, 0, y(h));
     const WheelBus& w = bus_.wheels[k];
     const double r = dynamic_radius_m(t.radius_unloaded_m, c.penetration_m);
-    const TmeasySlip slip = tmeasy_slip(w.curves, c.vx_mps, c.vy_mps, w.spin_radps, r, t.velocity_floor_mps);
+    const TmeasySlip slip =
+        tmeasy_slip(w.curves, c.vx_mps, c.vy_mps, w.spin_radps, r, t.velocity_floor_mps);
     const double rolling = r * std::abs(w.spin_radps);
     // d F / d v along each direction: vertical damping; eq. (24) damping paths at fixed f
-    const double dx = t.longitudinal_damping_nspm * slip.f_per_slip /
-                      (t.longitudinal_damping_nspm * rolling * w.curves.normalize_x + slip.f_per_slip + 1e-9);
-    const double dy = t.lateral_damping_nspm * slip.f_per_slip /
-                      (t.lateral_damping_nspm * rolling * w.curves.normalize_y + slip.f_per_slip + 1e-9);
+    const double dx =
+        t.longitudinal_damping_nspm * slip.f_per_slip /
+        (t.longitudinal_damping_nspm * rolling * w.curves.normalize_x + slip.f_per_slip + 1e-9);
+    const double dy =
+        t.lateral_damping_nspm * slip.f_per_slip /
+        (t.lateral_damping_nspm * rolling * w.curves.normalize_y + slip.f_per_slip + 1e-9);
+    // the rows have non-zeros only in the body columns 0..5 and the hub column h: update the
+    // 7 x 7 sub-block instead of a dense outer product
+    const Eigen::Index cols[7] = {0, 1, 2, 3, 4, 5, h};
     const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};
     const double damp[3] = {t.vertical_damping_nspm, dx, dy};
     for (int d = 0; d < 3; ++d) {
       const Vec3& u = *dirs[d];
-      a.setZero();
-      b.setZero();
-      a.segment<3>(0) = u;
-      a.segment<3>(3) = centre.cross(u);
-      a(h) = u.z();
-      b.segment<3>(0) = u;
-      b.segment<3>(3) = c.lever_m.cross(u);
-      b(h) = u.z();
-      dq_dz.noalias() -= damp[d] * a * b.transpose();
+      Eigen::Matrix<double, 7, 1> a, b;
+      a << u, centre.cross(u), u.z();
+      b << u, c.lever_m.cross(u), u.z();
+      for (int jj = 0; jj < 7; ++jj) {
+        for (int ii = 0; ii < 7; ++ii) dq_dz(cols[ii], cols[jj]) -= damp[d] * a(ii) * b(jj);
+      }
       if (d == 0) {
         // penetration rate = -n^T J_P z, and y' = K^-1 z: d pen / d y = -n^T J_P K
-        Vector& bk = b;
-        const Vec3 bt = rot * bk.segment<3>(0);  // (b_t^T R^T)^T
-        const Vec3 br = e_inv.transpose() * bk.segment<3>(3);
-        bk.segment<3>(0) = bt;
-        bk.segment<3>(3) = br;
-        dq_dy.noalias() -= t.vertical_stiffness_npm * a * bk.transpose();
+        Eigen::Matrix<double, 7, 1> bk;
+        bk << rot * b.segment<3>(0), e_inv.transpose() * b.segment<3>(3), b(6);
+        for (int jj = 0; jj < 7; ++jj) {
+          for (int ii = 0; ii < 7; ++ii) {
+            dq_dy(cols[ii], cols[jj]) -= t.vertical_stiffness_npm * a(ii) * bk(jj);
+          }
+        }
       }
     }
   }

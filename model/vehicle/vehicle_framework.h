@@ -45,17 +45,25 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
 
   /// Forces of wheel i at state (y, z) with the newest tire, wheel and steering states.
   [[nodiscard]] WheelForces wheel_forces(const Vector& y, const Vector& z, int i) const noexcept;
-  [[nodiscard]] WheelForces wheel_forces(const Mat3& rot, const Vector& y, const Vector& z, int i) const noexcept;
+  [[nodiscard]] WheelForces wheel_forces(const Mat3& rot, const Vector& y, const Vector& z,
+                                         int i) const noexcept;
   /// Contact kinematics of wheel i at (y, z).
   [[nodiscard]] WheelContact contact(const Vector& y, const Vector& z, int i) const noexcept;
-  [[nodiscard]] WheelContact contact(const Mat3& rot, const Vector& y, const Vector& z, int i) const noexcept;
+  [[nodiscard]] WheelContact contact(const Mat3& rot, const Vector& y, const Vector& z,
+                                     int i) const noexcept;
   [[nodiscard]] int wheel_count() const noexcept { return wheel_count_; }
-  [[nodiscard]] int axle_of(int wheel) const noexcept { return axle_of_[static_cast<std::size_t>(wheel)]; }
-  [[nodiscard]] const Vec3& mount(int wheel) const noexcept { return mount_[static_cast<std::size_t>(wheel)]; }
+  [[nodiscard]] int axle_of(int wheel) const noexcept {
+    return axle_of_[static_cast<std::size_t>(wheel)];
+  }
+  [[nodiscard]] const Vec3& mount(int wheel) const noexcept {
+    return mount_[static_cast<std::size_t>(wheel)];
+  }
   /// Total mass (sprung + unsprung).
   [[nodiscard]] double total_mass_kg() const noexcept { return total_mass_kg_; }
   /// Static spring preload of wheel i (design height at zero hub travel).
-  [[nodiscard]] double preload_n(int i) const noexcept { return preload_[static_cast<std::size_t>(i)]; }
+  [[nodiscard]] double preload_n(int i) const noexcept {
+    return preload_[static_cast<std::size_t>(i)];
+  }
   /// Gravity in the road frame (grade and bank tilt it).
   [[nodiscard]] const Vec3& gravity_road() const noexcept { return gravity_road_; }
 
@@ -72,7 +80,6 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   Vec3 gravity_road_;
   Vector y_;
   Vector z_;
-  mutable Vector row_a_, row_b_;  ///< Jacobian rows (workspace, sized at construction)
 };
 
 }  // namespace rig::model::vehicle

@@ -6,7 +6,8 @@
 
 namespace rig::model::vehicle {
 
-VehicleModel::VehicleModel(const VehicleParams& params, double step_size_s) : p_(params), h_(step_size_s) {
+VehicleModel::VehicleModel(const VehicleParams& params, double step_size_s)
+    : p_(params), h_(step_size_s) {
   if (p_.axles.empty() || 2 * p_.axles.size() > static_cast<std::size_t>(kMaxWheels)) {
     throw std::invalid_argument("vehicle: need 1.." + std::to_string(kMaxWheels / 2) + " axles");
   }
@@ -16,24 +17,29 @@ VehicleModel::VehicleModel(const VehicleParams& params, double step_size_s) : p_
   int driven_count = 0;
   for (int i = 0; i < bus_.wheel_count; ++i) {
     axle_of_wheel_[static_cast<std::size_t>(i)] = i / 2;
-    if (p_.axles[static_cast<std::size_t>(i / 2)].driven) driven[static_cast<std::size_t>(driven_count++)] = i;
+    if (p_.axles[static_cast<std::size_t>(i / 2)].driven)
+      driven[static_cast<std::size_t>(driven_count++)] = i;
   }
   framework_ = std::make_unique<VehicleFramework>(bus_, p_);
-  if (driven_count > 0) shafts_ = std::make_unique<HalfShafts>(bus_, p_.drivetrain, driven, driven_count);
+  if (driven_count > 0)
+    shafts_ = std::make_unique<HalfShafts>(bus_, p_.drivetrain, driven, driven_count);
   drivetrain_ = std::make_unique<Drivetrain>(bus_, p_.drivetrain, shafts_.get());
   steering_ = std::make_unique<Steering>(bus_, p_.steering);
-  wheel_stage_ = std::make_unique<WheelSpinStage>(bus_, p_, axle_of_wheel_, shafts_.get(), *steering_, *drivetrain_);
+  wheel_stage_ = std::make_unique<WheelSpinStage>(bus_, p_, axle_of_wheel_, shafts_.get(),
+                                                  *steering_, *drivetrain_);
 
   solver::ArrowheadPartition partition;
   partition.body_size = 6;
   partition.leaf_sizes.assign(p_.axles.size(), 2);
-  framework_stepper_ = std::make_unique<solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization>>(
-      *framework_, partition);
+  framework_stepper_ =
+      std::make_unique<solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization>>(
+          *framework_, partition);
   engine_ = std::make_unique<solver::Engine>(*framework_stepper_);
   // eq. (8) order: force elements (tires, half shafts), subsystems, framework last
   for (int i = 0; i < bus_.wheel_count; ++i) {
     const auto& axle = p_.axles[static_cast<std::size_t>(i / 2)];
-    tires_.push_back(std::make_unique<TireDeflection>(bus_, axle.tire, i, axle.tire.velocity_floor_mps));
+    tires_.push_back(
+        std::make_unique<TireDeflection>(bus_, axle.tire, i, axle.tire.velocity_floor_mps));
     tire_steppers_.push_back(std::make_unique<solver::ForceElementStepper<2>>(*tires_.back()));
     engine_->add_stage(*tire_steppers_.back());
   }
@@ -96,7 +102,9 @@ void VehicleModel::set_forward_speed(double speed_mps) noexcept {
   bus_.carrier_speed_radps = drivetrain_->speeds()(1);
 }
 
-double VehicleModel::wheel_load_n(int i) const noexcept { return wheel_out_[static_cast<std::size_t>(i)].load_n; }
+double VehicleModel::wheel_load_n(int i) const noexcept {
+  return wheel_out_[static_cast<std::size_t>(i)].load_n;
+}
 
 void VehicleModel::read_inputs(const Signals& s) noexcept {
   const auto in = [&](Signal id, double fallback) {
@@ -132,21 +140,26 @@ void VehicleModel::select_gear() noexcept {
     // shift schedule on the turbine speed, throttle-dependent upshift point, with a dwell time
     const double turbine = d.gear_ratios[static_cast<std::size_t>(gear - 1)] * d.final_drive_ratio *
                            drivetrain_->carrier_speed_radps();
-    const double up = d.upshift_speed_low_radps + bus_.throttle * (d.upshift_speed_high_radps - d.upshift_speed_low_radps);
+    const double up = d.upshift_speed_low_radps +
+                      bus_.throttle * (d.upshift_speed_high_radps - d.upshift_speed_low_radps);
     if (time_s_ - last_shift_s_ >= d.shift_dwell_s) {
-      if (turbine > up && gear < top) ++gear;
+      if (turbine > up && gear < top)
+        ++gear;
       else if (gear > 1) {
-        const double lower = d.gear_ratios[static_cast<std::size_t>(gear - 2)] * d.final_drive_ratio *
-                             drivetrain_->carrier_speed_radps();
+        const double lower = d.gear_ratios[static_cast<std::size_t>(gear - 2)] *
+                             d.final_drive_ratio * drivetrain_->carrier_speed_radps();
         if (lower < d.downshift_speed_radps * 2.0 && turbine < d.downshift_speed_radps) --gear;
       }
     }
   }
   if (gear != bus_.gear) last_shift_s_ = time_s_;
   bus_.gear = gear;
-  if (gear > 0) bus_.total_ratio = d.gear_ratios[static_cast<std::size_t>(gear - 1)] * d.final_drive_ratio;
-  else if (gear < 0) bus_.total_ratio = -d.reverse_ratio * d.final_drive_ratio;
-  else bus_.total_ratio = 0;
+  if (gear > 0)
+    bus_.total_ratio = d.gear_ratios[static_cast<std::size_t>(gear - 1)] * d.final_drive_ratio;
+  else if (gear < 0)
+    bus_.total_ratio = -d.reverse_ratio * d.final_drive_ratio;
+  else
+    bus_.total_ratio = 0;
 }
 
 void VehicleModel::update_contacts() noexcept {
@@ -158,8 +171,8 @@ void VehicleModel::update_contacts() noexcept {
     const WheelContact c = framework_->contact(y, z, i);
     w.vx_mps = c.vx_mps;
     w.vy_mps = c.vy_mps;
-    w.load_n = vertical_tire_force_n(c.penetration_m, c.penetration_rate_mps, t.vertical_stiffness_npm,
-                                     t.vertical_damping_nspm);
+    w.load_n = vertical_tire_force_n(c.penetration_m, c.penetration_rate_mps,
+                                     t.vertical_stiffness_npm, t.vertical_damping_nspm);
     w.radius_dynamic_m = dynamic_radius_m(t.radius_unloaded_m, c.penetration_m);
     w.curves = tmeasy_curves(t, w.load_n, p_.road.friction);
   }
@@ -174,7 +187,8 @@ void VehicleModel::save_state() noexcept {
   saved_dt_z_ = drivetrain_->speeds();
   saved_st_y_ = steering_->coordinates();
   saved_st_z_ = steering_->speeds();
-  for (int i = 0; i < bus_.wheel_count; ++i) saved_spin_[static_cast<std::size_t>(i)] = bus_.wheels[static_cast<std::size_t>(i)].spin_radps;
+  for (int i = 0; i < bus_.wheel_count; ++i)
+    saved_spin_[static_cast<std::size_t>(i)] = bus_.wheels[static_cast<std::size_t>(i)].spin_radps;
   saved_deflection_ = bus_.deflection_m;
 }
 
@@ -200,8 +214,8 @@ bool VehicleModel::state_finite() const noexcept {
             steering_->speeds().allFinite();
   for (int i = 0; i < bus_.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    ok = ok && std::isfinite(bus_.wheels[k].spin_radps) && std::isfinite(bus_.deflection_m[2 * k]) &&
-         std::isfinite(bus_.deflection_m[2 * k + 1]);
+    ok = ok && std::isfinite(bus_.wheels[k].spin_radps) &&
+         std::isfinite(bus_.deflection_m[2 * k]) && std::isfinite(bus_.deflection_m[2 * k + 1]);
   }
   return ok;
 }
@@ -232,7 +246,8 @@ StepStatus VehicleModel::step(Signals& signals) noexcept {
   const double tb = steering_->torsion_bar_torque_nm(steering_->coordinates(), steering_->speeds());
   bus_.torsion_bar_torque_nm = tb;
   bus_.assist_torque_nm = steering_->assist_torque_nm(tb);
-  bus_.engine_torque_nm = engine_torque_nm(p_.drivetrain, bus_.throttle, drivetrain_->engine_speed_radps());
+  bus_.engine_torque_nm =
+      engine_torque_nm(p_.drivetrain, bus_.throttle, drivetrain_->engine_speed_radps());
   write_outputs(signals);
   return StepStatus::kOk;
 }
@@ -241,7 +256,9 @@ void VehicleModel::write_outputs(Signals& s) noexcept {
   const auto& y = framework_->coordinates();
   const auto& z = framework_->speeds();
   const int n = bus_.wheel_count;
-  const auto wheel = [&](int i) -> const WheelBus& { return bus_.wheels[static_cast<std::size_t>(i)]; };
+  const auto wheel = [&](int i) -> const WheelBus& {
+    return bus_.wheels[static_cast<std::size_t>(i)];
+  };
   s.set(Signal::kVehicleSpeed, z(0));
   s.set(Signal::kWheelSpeedFL, wheel(0).spin_radps);
   s.set(Signal::kWheelSpeedFR, wheel(1).spin_radps);

@@ -76,7 +76,8 @@ class VehicleModel final : public SteppedModel {
   std::unique_ptr<solver::MechanicalStepper<2>> drivetrain_stepper_;
   std::unique_ptr<solver::MechanicalStepper<2>> steering_stepper_;
   std::unique_ptr<WheelSpinStage> wheel_stage_;
-  std::unique_ptr<solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization>> framework_stepper_;
+  std::unique_ptr<solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization>>
+      framework_stepper_;
   std::unique_ptr<solver::Engine> engine_;
 
   // saved state for kNonFinite recovery and the acceleration output

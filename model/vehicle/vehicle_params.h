@@ -40,35 +40,36 @@ struct TireParams {
 
 /// One axle: two wheels at +-track/2, independent vertical hub travel.
 struct AxleParams {
-  double position_x_m = 0;     ///< wheel centre x relative to the sprung-mass CG (forward +)
+  double position_x_m = 0;  ///< wheel centre x relative to the sprung-mass CG (forward +)
   double track_m = 1.55;
-  double unsprung_mass_kg = 40;  ///< per wheel
-  double spring_stiffness_npm = 3e4;   ///< at the wheel (wheel rate), per wheel
-  double damper_bump_nspm = 3e3;       ///< damping at the wheel, compression
-  double damper_rebound_nspm = 5e3;    ///< damping at the wheel, extension
-  double bump_stop_travel_m = 0.08;    ///< hub travel where the bump stop engages (up +)
-  double rebound_stop_travel_m = 0.10; ///< magnitude of down travel where the rebound stop engages
+  double unsprung_mass_kg = 40;         ///< per wheel
+  double spring_stiffness_npm = 3e4;    ///< at the wheel (wheel rate), per wheel
+  double damper_bump_nspm = 3e3;        ///< damping at the wheel, compression
+  double damper_rebound_nspm = 5e3;     ///< damping at the wheel, extension
+  double bump_stop_travel_m = 0.08;     ///< hub travel where the bump stop engages (up +)
+  double rebound_stop_travel_m = 0.10;  ///< magnitude of down travel where the rebound stop engages
   double stop_stiffness_npm = 5e5;
   double anti_roll_stiffness_npm = 1e4;  ///< at the wheels: F = k (s_left - s_right)
   bool steered = false;
   bool driven = false;
-  int brake_circuit = 0;  ///< 0 = front circuit, 1 = rear circuit
+  int brake_circuit = 0;               ///< 0 = front circuit, 1 = rear circuit
   double brake_gain_nm_per_pa = 1e-4;  ///< brake torque capacity per wheel per pressure
   TireParams tire{};
 };
 
 /// Enhanced rack-and-pinion steering (sec. 2.2).
 struct SteeringParams {
-  bool torque_input = false;  ///< false: wheel driven by angle (steering robot); true: by hand torque
-  double wheel_inertia_kgm2 = 0.04;      ///< steering wheel + upper column
+  bool torque_input =
+      false;  ///< false: wheel driven by angle (steering robot); true: by hand torque
+  double wheel_inertia_kgm2 = 0.04;  ///< steering wheel + upper column
   double column_damping_nmspr = 0.05;
-  double robot_stiffness_nmpr = 300;     ///< angle mode: position servo stiffness
+  double robot_stiffness_nmpr = 300;  ///< angle mode: position servo stiffness
   double robot_damping_nmspr = 8;
   double torsion_bar_stiffness_nmpr = 120;
   double torsion_bar_damping_nmspr = 0.3;
   double rack_per_pinion_m_per_rad = 0.0081;  ///< steering box ratio i_SB
-  double rack_mass_kg = 2.0;             ///< rack + pinion + motor reflected
-  double rack_friction_n = 150;          ///< dry friction, regularized implicitly
+  double rack_mass_kg = 2.0;                  ///< rack + pinion + motor reflected
+  double rack_friction_n = 150;               ///< dry friction, regularized implicitly
   double rack_friction_speed_mps = 0.002;
   double steering_arm_m = 0.13;          ///< wheel steer = rack travel / arm (small angles)
   double tie_rod_stiffness_npm = 1.5e6;  ///< per side, as seen at the rack
@@ -81,11 +82,11 @@ struct SteeringParams {
 struct DrivetrainParams {
   std::vector<double> full_load_speed_radps{80, 200, 400, 600, 700};
   std::vector<double> full_load_torque_nm{120, 230, 250, 210, 150};
-  double drag_torque_nm = 15;             ///< at zero throttle
+  double drag_torque_nm = 15;  ///< at zero throttle
   double drag_torque_per_speed_nms = 0.03;
   double engine_inertia_kgm2 = 0.2;
-  double idle_speed_radps = 84;           ///< ~800 rpm
-  double idle_gain_per_radps = 0.02;      ///< throttle per rad/s below idle
+  double idle_speed_radps = 84;       ///< ~800 rpm
+  double idle_gain_per_radps = 0.02;  ///< throttle per rad/s below idle
   double max_speed_radps = 680;
   double converter_capacity_nms2 = 0.0047;  ///< T = k w_e (w_e - w_t)
   double lockup_damping_nms = 50;           ///< lock-up clutch, fully engaged
@@ -106,10 +107,10 @@ struct DrivetrainParams {
 
 /// Sprung mass (chassis) and aerodynamics.
 struct ChassisParams {
-  double mass_kg = 1300;  ///< sprung mass
+  double mass_kg = 1300;                                ///< sprung mass
   std::array<double, 3> inertia_kgm2{450, 1900, 2100};  ///< Ixx, Iyy, Izz about the CG
   double inertia_xz_kgm2 = 0;
-  double cg_height_m = 0.55;  ///< design position, above ground
+  double cg_height_m = 0.55;   ///< design position, above ground
   double drag_area_m2 = 0.65;  ///< c_d A
   double air_density_kgpm3 = 1.2;
 };

@@ -9,12 +9,12 @@
 namespace rig::model::vehicle {
 
 struct WheelContact {
-  Vec3 lever_m;        ///< contact point relative to the CG, body axes (for J_P = [I, -[r]x, e_z])
-  Vec3 ex, ey, normal; ///< tire longitudinal, lateral and road normal, body axes
-  Vec3 spin_axis;      ///< wheel spin axis, body axes
-  double vx_mps = 0;   ///< contact point velocity along ex
-  double vy_mps = 0;   ///< along ey
-  double penetration_m = 0;       ///< r0 - wheel centre height (> 0 in contact)
+  Vec3 lever_m;         ///< contact point relative to the CG, body axes (for J_P = [I, -[r]x, e_z])
+  Vec3 ex, ey, normal;  ///< tire longitudinal, lateral and road normal, body axes
+  Vec3 spin_axis;       ///< wheel spin axis, body axes
+  double vx_mps = 0;    ///< contact point velocity along ex
+  double vy_mps = 0;    ///< along ey
+  double penetration_m = 0;  ///< r0 - wheel centre height (> 0 in contact)
   double penetration_rate_mps = 0;
 };
 

@@ -10,9 +10,15 @@ WheelSpinStage::WheelSpinStage(VehicleBus& bus, const VehicleParams& p,
                                const std::array<int, kMaxWheels>& axle_of_wheel,
                                const HalfShafts* shafts, Steering& steering,
                                const Drivetrain& drivetrain)
-    : bus_(bus), p_(p), axle_of_wheel_(axle_of_wheel), shafts_(shafts), steering_(steering), drivetrain_(drivetrain) {
+    : bus_(bus),
+      p_(p),
+      axle_of_wheel_(axle_of_wheel),
+      shafts_(shafts),
+      steering_(steering),
+      drivetrain_(drivetrain) {
   if (shafts_ != nullptr) {
-    for (int i = 0; i < shafts_->count(); ++i) driven_[static_cast<std::size_t>(shafts_->wheel(i))] = true;
+    for (int i = 0; i < shafts_->count(); ++i)
+      driven_[static_cast<std::size_t>(shafts_->wheel(i))] = true;
   }
 }
 
@@ -23,7 +29,8 @@ void WheelSpinStage::advance(double h) noexcept {
   double rack_force = 0;
   for (int i = 0; i < bus_.wheel_count; ++i) {
     WheelBus& w = bus_.wheels[static_cast<std::size_t>(i)];
-    if (!p_.axles[static_cast<std::size_t>(axle_of_wheel_[static_cast<std::size_t>(i)])].steered) continue;
+    if (!p_.axles[static_cast<std::size_t>(axle_of_wheel_[static_cast<std::size_t>(i)])].steered)
+      continue;
     w.tie_rod_force_n = w.force_y_n * sp.trail_m / sp.steering_arm_m;
     w.steer_rad = (rack - w.tie_rod_force_n / sp.tie_rod_stiffness_npm) / sp.steering_arm_m;
     rack_force += w.tie_rod_force_n;
@@ -32,25 +39,29 @@ void WheelSpinStage::advance(double h) noexcept {
 
   bus_.carrier_speed_radps = drivetrain_.carrier_speed_radps();  // newest (eq. 8 order)
   double shaft_torque = 0;
-  if (shafts_ != nullptr) shaft_torque = shafts_->shaft_torque_nm(shafts_->state_const(), bus_.carrier_speed_radps);
+  if (shafts_ != nullptr)
+    shaft_torque = shafts_->shaft_torque_nm(shafts_->state_const(), bus_.carrier_speed_radps);
   for (int i = 0; i < bus_.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
     WheelBus& w = bus_.wheels[k];
     const TireParams& tire = p_.axles[static_cast<std::size_t>(axle_of_wheel_[k])].tire;
     const double r = w.radius_dynamic_m;
     const double xe = bus_.deflection_m[2 * k];
-    const TmeasySlip slip = tmeasy_slip(w.curves, w.vx_mps, w.vy_mps, w.spin_radps, r, tire.velocity_floor_mps);
+    const TmeasySlip slip =
+        tmeasy_slip(w.curves, w.vx_mps, w.vy_mps, w.spin_radps, r, tire.velocity_floor_mps);
     const double rolling = r * std::abs(w.spin_radps);
-    const double rate = deflection_rate(xe, w.vx_mps - r * w.spin_radps, rolling, w.curves.normalize_x,
-                                        slip.f_per_slip, tire.longitudinal_stiffness_npm,
-                                        tire.longitudinal_damping_nspm);
+    const double rate = deflection_rate(
+        xe, w.vx_mps - r * w.spin_radps, rolling, w.curves.normalize_x, slip.f_per_slip,
+        tire.longitudinal_stiffness_npm, tire.longitudinal_damping_nspm);
     const double fx = tire.longitudinal_stiffness_npm * xe + tire.longitudinal_damping_nspm * rate;
     // d F_x / d w through the damping path (eq. 24, at fixed f)
-    const double denom = tire.longitudinal_damping_nspm * rolling * w.curves.normalize_x + slip.f_per_slip + 1e-9;
+    const double denom =
+        tire.longitudinal_damping_nspm * rolling * w.curves.normalize_x + slip.f_per_slip + 1e-9;
     const double dfx_dw = tire.longitudinal_damping_nspm * slip.f_per_slip * r / denom;
     double inertia = tire.spin_inertia_kgm2 + h * r * dfx_dw;
     const double ts = driven_[k] ? shaft_torque : 0.0;
-    if (driven_[k]) inertia += h * shafts_->d_torque_d_carrier() / static_cast<double>(shafts_->count());
+    if (driven_[k])
+      inertia += h * shafts_->d_torque_d_carrier() / static_cast<double>(shafts_->count());
     w.shaft_torque_nm = ts;
     const double other = ts - r * fx;
     // Stick prediction: the friction torque that makes w(k+1) = 0.

@@ -19,8 +19,9 @@ namespace rig::model::vehicle {
 
 class WheelSpinStage final : public solver::Stage {
  public:
-  WheelSpinStage(VehicleBus& bus, const VehicleParams& p, const std::array<int, kMaxWheels>& axle_of_wheel,
-                 const HalfShafts* shafts, Steering& steering, const Drivetrain& drivetrain);
+  WheelSpinStage(VehicleBus& bus, const VehicleParams& p,
+                 const std::array<int, kMaxWheels>& axle_of_wheel, const HalfShafts* shafts,
+                 Steering& steering, const Drivetrain& drivetrain);
   void advance(double h) noexcept override;
 
  private:

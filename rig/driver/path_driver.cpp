@@ -62,7 +62,8 @@ void PathDriver::update(double t, model::Signals& s) noexcept {
   const double ty = path_y(tx);
   const double lateral = -(tx - x) * sx + (ty - y) * cx;  // target in vehicle axes
   const double wheel = std::atan(2.0 * p_.wheelbase_m * lateral / (look * look));
-  const double sw = std::clamp(p_.steering_ratio * wheel, -p_.max_steering_wheel_rad, p_.max_steering_wheel_rad);
+  const double sw =
+      std::clamp(p_.steering_ratio * wheel, -p_.max_steering_wheel_rad, p_.max_steering_wheel_rad);
   if (mine(Signal::kSteeringWheelAngleCmd)) s.set(Signal::kSteeringWheelAngleCmd, sw);
 }
 

@@ -16,15 +16,15 @@ struct PathPoint {
 };
 
 struct PathDriverParams {
-  std::vector<PathPoint> path;        ///< centreline in the road frame, x increasing
+  std::vector<PathPoint> path;  ///< centreline in the road frame, x increasing
   double target_speed_mps = 60 / 3.6;
-  double preview_time_s = 0.9;        ///< look-ahead distance = max(min, v T)
+  double preview_time_s = 0.9;  ///< look-ahead distance = max(min, v T)
   double preview_min_m = 6.0;
   double wheelbase_m = 2.8;
-  double steering_ratio = 16.0;       ///< steering wheel angle / road wheel angle
+  double steering_ratio = 16.0;  ///< steering wheel angle / road wheel angle
   double max_steering_wheel_rad = 8.0;
-  double speed_gain_per_mps = 0.3;    ///< throttle per m/s of speed error
-  double speed_integral_per_m = 0.05; ///< throttle per m of integrated speed error
+  double speed_gain_per_mps = 0.3;     ///< throttle per m/s of speed error
+  double speed_integral_per_m = 0.05;  ///< throttle per m of integrated speed error
   double brake_gain_pa_per_mps = 1.5e6;
 };
 

@@ -22,7 +22,8 @@ TmeasyCurve read_curve(io::StrictTable t) {
   c.slip_at_sliding = t.number_in("slip_at_sliding", 1e-3, 100);
   t.finish();
   if (c.slip_at_sliding <= c.slip_at_max) throw t.error("slip_at_sliding must exceed slip_at_max");
-  if (c.sliding_force_n > c.max_force_n) throw t.error("sliding_force_n must not exceed max_force_n");
+  if (c.sliding_force_n > c.max_force_n)
+    throw t.error("sliding_force_n must not exceed max_force_n");
   return c;
 }
 
@@ -94,7 +95,8 @@ void read_steering(io::StrictTable t, model::vehicle::SteeringParams& s) {
 void read_drivetrain(io::StrictTable t, model::vehicle::DrivetrainParams& d) {
   d.full_load_speed_radps = t.numbers("full_load_speed_radps");
   d.full_load_torque_nm = t.numbers("full_load_torque_nm");
-  if (d.full_load_speed_radps.size() < 2 || d.full_load_speed_radps.size() != d.full_load_torque_nm.size()) {
+  if (d.full_load_speed_radps.size() < 2 ||
+      d.full_load_speed_radps.size() != d.full_load_torque_nm.size()) {
     throw t.error("full_load_torque_nm", "needs as many entries as full_load_speed_radps (>= 2)");
   }
   for (std::size_t i = 1; i < d.full_load_speed_radps.size(); ++i) {
@@ -112,7 +114,8 @@ void read_drivetrain(io::StrictTable t, model::vehicle::DrivetrainParams& d) {
   d.lockup_damping_nms = t.number_in("lockup_damping_nms", 0, 1e5);
   d.lockup_start_radps = t.number_in("lockup_start_radps", 0, 2000);
   d.lockup_full_radps = t.number_in("lockup_full_radps", 0, 2000);
-  if (d.lockup_full_radps <= d.lockup_start_radps) throw t.error("lockup_full_radps", "must exceed lockup_start_radps");
+  if (d.lockup_full_radps <= d.lockup_start_radps)
+    throw t.error("lockup_full_radps", "must exceed lockup_start_radps");
   d.gear_ratios = t.numbers("gear_ratios");
   if (d.gear_ratios.empty()) throw t.error("gear_ratios", "needs at least one gear");
   d.reverse_ratio = t.number_in("reverse_ratio", 0.1, 50);
@@ -138,7 +141,8 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file) {
   {
     io::StrictTable c = t.table("chassis");
     p.chassis.mass_kg = c.number_in("mass_kg", 1, 1e6);
-    p.chassis.inertia_kgm2 = {c.number_in("inertia_xx_kgm2", 1e-3, 1e8), c.number_in("inertia_yy_kgm2", 1e-3, 1e8),
+    p.chassis.inertia_kgm2 = {c.number_in("inertia_xx_kgm2", 1e-3, 1e8),
+                              c.number_in("inertia_yy_kgm2", 1e-3, 1e8),
                               c.number_in("inertia_zz_kgm2", 1e-3, 1e8)};
     p.chassis.inertia_xz_kgm2 = c.number_in("inertia_xz_kgm2", 0, -1e7, 1e7);
     p.chassis.cg_height_m = c.number_in("cg_height_m", 0.05, 5);

@@ -31,19 +31,25 @@ void step_bench(benchmark::State& state, const char* file) {
   }
 }
 
-void BM_SedanStep(benchmark::State& state) { step_bench(state, RIG_SOURCE_DIR "/config/vehicles/sedan.toml"); }
-void BM_TruckStep(benchmark::State& state) { step_bench(state, RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml"); }
+void BM_SedanStep(benchmark::State& state) {
+  step_bench(state, RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+}
+void BM_TruckStep(benchmark::State& state) {
+  step_bench(state, RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml");
+}
 
 /// 20 s of a double-lane-change-like steering input at 60 km/h, offline (wall time per run).
 void BM_Sedan20sOffline(benchmark::State& state) {
-  const auto params = rig::vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+  const auto params =
+      rig::vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
   for (auto _ : state) {
     rig::model::vehicle::VehicleModel m(params, 1e-3);
     Signals s = inputs();
     m.set_forward_speed(60 / 3.6);
     for (int k = 0; k < 20000; ++k) {
       const double t = k * 1e-3;
-      s[Signal::kSteeringWheelAngleCmd] = (t > 2 && t < 6) ? 1.0 * std::sin(M_PI * (t - 2) / 2) : 0.0;
+      s[Signal::kSteeringWheelAngleCmd] =
+          (t > 2 && t < 6) ? 1.0 * std::sin(M_PI * (t - 2) / 2) : 0.0;
       benchmark::DoNotOptimize(m.step(s));
     }
   }

@@ -1,8 +1,8 @@
 // Acceptance tests of the generic vehicle (issue 6) on the sedan of config/vehicles/sedan.toml.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -20,7 +20,9 @@
 namespace rig::model::vehicle {
 namespace {
 
-VehicleParams sedan() { return vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml"); }
+VehicleParams sedan() {
+  return vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+}
 
 Signals driver_inputs() {
   Signals s;
@@ -33,7 +35,8 @@ Signals driver_inputs() {
 }
 
 /// Runs for `seconds`, calling `inputs(t, signals)` before each step; fails on a NaN.
-void run(VehicleModel& m, Signals& s, double seconds, const std::function<void(double, Signals&)>& inputs) {
+void run(VehicleModel& m, Signals& s, double seconds,
+         const std::function<void(double, Signals&)>& inputs) {
   const long n = std::lround(seconds / m.step_size_s());
   for (long k = 0; k < n; ++k) {
     if (inputs) inputs(m.time_s(), s);
@@ -56,11 +59,11 @@ TEST(Vehicle, StaticEquilibrium) {
   const double l = p.axles[0].position_x_m - p.axles[1].position_x_m;
   const double front_expected = p.chassis.mass_kg * 9.81 * (-p.axles[1].position_x_m) / l +
                                 2 * p.axles[0].unsprung_mass_kg * 9.81;
-  EXPECT_NEAR(front / total, front_expected / (mass * 9.81), 0.005 * front_expected / (mass * 9.81));
+  EXPECT_NEAR(front / total, front_expected / (mass * 9.81),
+              0.005 * front_expected / (mass * 9.81));
   std::printf("static: total %.1f N (m g %.1f N), front %.2f %% (CG %.2f %%)\n", total, mass * 9.81,
               100 * front / total, 100 * front_expected / (mass * 9.81));
 }
-
 
 TEST(Vehicle, GradeHoldCreepAndRollAway) {
   VehicleParams p = sedan();
@@ -80,7 +83,8 @@ TEST(Vehicle, GradeHoldCreepAndRollAway) {
   s[Signal::kBrakePressureRear] = 0;
   run(m, s, 3.0, nullptr);
   const double rolled = m.framework().coordinates()(0) - x0;
-  std::printf("grade 20 %%: released, rolled %.2f m in 3 s, speed %.2f m/s\n", rolled, m.framework().speeds()(0));
+  std::printf("grade 20 %%: released, rolled %.2f m in 3 s, speed %.2f m/s\n", rolled,
+              m.framework().speeds()(0));
   EXPECT_LT(rolled, -1.0);  // rolls back downhill
 }
 
@@ -93,8 +97,8 @@ TEST(Vehicle, AccelerationAndCoastDown) {
     if (t100 < 0 && sig[Signal::kVehicleSpeed] >= 100 / 3.6) t100 = t;
   });
   const double v15 = s[Signal::kVehicleSpeed];
-  std::printf("full throttle: 0-100 km/h %.2f s, v(15 s) = %.1f km/h, gear %d, engine %.0f rad/s\n", t100,
-              3.6 * v15, static_cast<int>(s[Signal::kGear]), s[Signal::kEngineSpeed]);
+  std::printf("full throttle: 0-100 km/h %.2f s, v(15 s) = %.1f km/h, gear %d, engine %.0f rad/s\n",
+              t100, 3.6 * v15, static_cast<int>(s[Signal::kGear]), s[Signal::kEngineSpeed]);
   EXPECT_GT(t100, 5.0);  // 135 kW, 1500 kg: about 7-9 s
   EXPECT_LT(t100, 12.0);
   EXPECT_GE(s[Signal::kGear], 3);
@@ -105,10 +109,14 @@ TEST(Vehicle, AccelerationAndCoastDown) {
   run(m, s, 10.0, nullptr);
   const double v1 = s[Signal::kVehicleSpeed];
   const VehicleParams& p = m.params();
-  const double mass = m.framework().total_mass_kg() + 4 * p.axles[0].tire.spin_inertia_kgm2 / (0.31 * 0.31);
+  const double mass =
+      m.framework().total_mass_kg() + 4 * p.axles[0].tire.spin_inertia_kgm2 / (0.31 * 0.31);
   double v = v0;
   for (int k = 0; k < 10000; ++k) {  // the hand model, explicit Euler at 1 ms
-    v -= 1e-3 * (0.5 * 1.2 * p.chassis.drag_area_m2 * v * v + 0.01 * m.framework().total_mass_kg() * 9.81) / mass;
+    v -=
+        1e-3 *
+        (0.5 * 1.2 * p.chassis.drag_area_m2 * v * v + 0.01 * m.framework().total_mass_kg() * 9.81) /
+        mass;
   }
   std::printf("coast-down: %.2f -> %.2f m/s in 10 s (hand model %.2f m/s)\n", v0, v1, v);
   EXPECT_NEAR(v0 - v1, v0 - v, 0.15 * (v0 - v));
@@ -133,7 +141,8 @@ StepResult step_steer(double h, double sw_angle_rad) {
     const double t = m.time_s();
     // ramp to the step in 0.1 s (ISO 7401: as fast as possible, < 0.15 s); throttle holds speed
     s[Signal::kSteeringWheelAngleCmd] = sw_angle_rad * std::clamp((t - t_step) / 0.1, 0.0, 1.0);
-    s[Signal::kThrottlePedal] = std::clamp(0.2 + 0.5 * (80 / 3.6 - s[Signal::kVehicleSpeed]), 0.0, 1.0);
+    s[Signal::kThrottlePedal] =
+        std::clamp(0.2 + 0.5 * (80 / 3.6 - s[Signal::kVehicleSpeed]), 0.0, 1.0);
     if (m.step(s) != StepStatus::kOk) {
       r.yaw_rate_final = NAN;
       return r;
@@ -149,7 +158,8 @@ StepResult step_steer(double h, double sw_angle_rad) {
   r.yaw_rate_spread_end = rmax - rmin;
   for (std::size_t k = 0; k < yaw.size(); ++k) {
     r.yaw_rate_peak = std::max(r.yaw_rate_peak, yaw[k]);
-    if (r.t90 < 0 && yaw[k] >= 0.9 * r.yaw_rate_final) r.t90 = static_cast<double>(k + 1) * h - (t_step + 0.05);
+    if (r.t90 < 0 && yaw[k] >= 0.9 * r.yaw_rate_final)
+      r.t90 = static_cast<double>(k + 1) * h - (t_step + 0.05);
   }
   return r;
 }
@@ -158,10 +168,11 @@ TEST(Vehicle, StepSteerSettlesAtOneAndTwoMilliseconds) {
   for (double h : {1e-3, 2e-3}) {
     const StepResult r = step_steer(h, 0.5);  // ~29 deg at the steering wheel, ~4 m/s^2
     ASSERT_TRUE(std::isfinite(r.yaw_rate_final)) << "h = " << h;
-    std::printf("step steer h=%.0f ms: yaw rate %.4f rad/s, a_y %.2f m/s^2, response time (90 %%) %.3f s, "
-                "overshoot %.1f %%, spread in the last second %.2e rad/s\n",
-                h * 1e3, r.yaw_rate_final, r.ay_final, r.t90,
-                100 * (r.yaw_rate_peak / r.yaw_rate_final - 1), r.yaw_rate_spread_end);
+    std::printf(
+        "step steer h=%.0f ms: yaw rate %.4f rad/s, a_y %.2f m/s^2, response time (90 %%) %.3f s, "
+        "overshoot %.1f %%, spread in the last second %.2e rad/s\n",
+        h * 1e3, r.yaw_rate_final, r.ay_final, r.t90,
+        100 * (r.yaw_rate_peak / r.yaw_rate_final - 1), r.yaw_rate_spread_end);
     EXPECT_GT(r.yaw_rate_final, 0.1);
     EXPECT_LT(r.t90, 0.5);
     EXPECT_LT(r.yaw_rate_peak / r.yaw_rate_final, 1.3);
@@ -210,7 +221,8 @@ TEST(Vehicle, SteadyStateCircleUndersteerGradientAndSaturation) {
   m.set_forward_speed(v_target);
   const auto control = [&](double, Signals& sig) {
     sig[Signal::kSteeringWheelAngleCmd] = sw;
-    sig[Signal::kThrottlePedal] = std::clamp(0.1 + 0.8 * (v_target - sig[Signal::kVehicleSpeed]), 0.0, 1.0);
+    sig[Signal::kThrottlePedal] =
+        std::clamp(0.1 + 0.8 * (v_target - sig[Signal::kVehicleSpeed]), 0.0, 1.0);
   };
   for (double v_hold : {5.0, 6.0, 7.0, 8.0}) {
     v_target = v_hold;
@@ -242,9 +254,11 @@ TEST(Vehicle, SteadyStateCircleUndersteerGradientAndSaturation) {
     cr = 2 * tmeasy_curves(p.axles[1].tire, fzr / 2, 1.0).y.initial_slope_n;
   }
   const double k_linear = fzf / 9.81 / cf - fzr / 9.81 / cr;
-  std::printf("circle: understeer gradient %.5f rad/(m/s^2) = %.3f deg/g at the wheels (linear %.5f), "
-              "a_y max %.2f m/s^2 = %.2f mu g, %d samples\n",
-              k_measured, k_measured * 9.81 * 180 / M_PI, k_linear, ay_max, ay_max / 9.81, static_cast<int>(n));
+  std::printf(
+      "circle: understeer gradient %.5f rad/(m/s^2) = %.3f deg/g at the wheels (linear %.5f), "
+      "a_y max %.2f m/s^2 = %.2f mu g, %d samples\n",
+      k_measured, k_measured * 9.81 * 180 / M_PI, k_linear, ay_max, ay_max / 9.81,
+      static_cast<int>(n));
   EXPECT_NEAR(k_measured, k_linear, 0.15 * std::abs(k_linear));
   EXPECT_GT(ay_max, 0.75 * 9.81);
   EXPECT_LT(ay_max, 1.05 * 9.81);
@@ -253,7 +267,8 @@ TEST(Vehicle, SteadyStateCircleUndersteerGradientAndSaturation) {
 /// Forward-difference Jacobians of a mechanical block's q, for comparison with the analytic ones.
 template <int N>
 void fd_jacobians(const solver::MechanicalBlock<N>& block, const Eigen::Matrix<double, N, 1>& y,
-                  const Eigen::Matrix<double, N, 1>& z, Eigen::MatrixXd& dq_dy, Eigen::MatrixXd& dq_dz) {
+                  const Eigen::Matrix<double, N, 1>& z, Eigen::MatrixXd& dq_dy,
+                  Eigen::MatrixXd& dq_dz) {
   const Eigen::Index n = y.size();
   Eigen::Matrix<double, N, 1> q0(n), q1(n), yp = y, zp = z;
   block.applied_forces(y, z, q0);
@@ -309,7 +324,8 @@ TEST(Vehicle, AnalyticPartialJacobiansMatchFiniteDifferences) {
 
 TEST(Vehicle, TruckStaticEquilibriumAndGradeHoldAtOneAndTwoMilliseconds) {
   for (double h : {1e-3, 2e-3}) {
-    VehicleParams p = vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml");
+    VehicleParams p =
+        vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml");
     VehicleModel flat(p, h);
     Signals s = driver_inputs();
     s[Signal::kGearRequest] = 0;
@@ -326,14 +342,15 @@ TEST(Vehicle, TruckStaticEquilibriumAndGradeHoldAtOneAndTwoMilliseconds) {
     const double x0 = hill.framework().coordinates()(0);
     run(hill, s, 10.0, nullptr);
     const double creep = std::abs(hill.framework().coordinates()(0) - x0);
-    std::printf("truck h=%.0f ms: loads %.0f N (m g %.0f N), creep on 20 %% over 10 s %.3g mm\n", h * 1e3, total,
-                mg, creep * 1e3);
+    std::printf("truck h=%.0f ms: loads %.0f N (m g %.0f N), creep on 20 %% over 10 s %.3g mm\n",
+                h * 1e3, total, mg, creep * 1e3);
     EXPECT_LT(creep, 1e-3);
   }
 }
 
 TEST(VehicleConfig, UnknownKeyIsAnErrorWithFileAndLine) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rig_vehicle_config_test";
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "rig_vehicle_config_test";
   std::filesystem::create_directories(dir);
   std::ifstream in(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -361,7 +378,8 @@ TEST(Vehicle, DoubleLaneChangeClosedLoopAt60kmh) {
     dp.steering_ratio = p.steering.steering_arm_m / p.steering.rack_per_pinion_m_per_rad;
     driver::PathDriver d(dp);
     Signals s = driver_inputs();
-    double max_lane = 0, max_offset_lane1 = 0, max_offset_lane3 = 0, max_offset_lane5 = 0, max_ay = 0;
+    double max_lane = 0, max_offset_lane1 = 0, max_offset_lane3 = 0, max_offset_lane5 = 0,
+           max_ay = 0;
     const long n = std::lround(12.0 / h);
     for (long k = 0; k < n; ++k) {
       d.update(m.time_s(), s);
@@ -373,9 +391,12 @@ TEST(Vehicle, DoubleLaneChangeClosedLoopAt60kmh) {
       if (x >= 0 && x <= 125) max_ay = std::max(max_ay, std::abs(s[Signal::kLateralAccel]));
       max_lane = std::max(max_lane, off);
     }
-    std::printf("DLC 60 km/h h=%.0f ms: max |offset| lane 1 %.3f m, lane 3 %.3f m, lane 5 %.3f m, max |a_y| %.2f "
-                "m/s^2, speed at end %.1f km/h\n",
-                h * 1e3, max_offset_lane1, max_offset_lane3, max_offset_lane5, max_ay, 3.6 * s[Signal::kVehicleSpeed]);
+    std::printf(
+        "DLC 60 km/h h=%.0f ms: max |offset| lane 1 %.3f m, lane 3 %.3f m, lane 5 %.3f m, max "
+        "|a_y| %.2f "
+        "m/s^2, speed at end %.1f km/h\n",
+        h * 1e3, max_offset_lane1, max_offset_lane3, max_offset_lane5, max_ay,
+        3.6 * s[Signal::kVehicleSpeed]);
     // ISO 3888-1 lane half-widths minus half the car width (1.80 m): 0.21, 0.30, 0.39 m
     EXPECT_LT(max_offset_lane1, 0.21);
     EXPECT_LT(max_offset_lane3, 0.30);
