@@ -65,27 +65,29 @@ TEST(Vehicle, StaticEquilibrium) {
               100 * front / total, 100 * front_expected / (mass * 9.81));
 }
 
-TEST(Vehicle, GradeHoldCreepAndRollAway) {
-  VehicleParams p = sedan();
-  p.road.grade = 0.20;  // 20 % uphill in +x
-  VehicleModel m(p, 1e-3);
-  Signals s = driver_inputs();
-  s[Signal::kGearRequest] = 0;
-  s[Signal::kBrakePressureFront] = 3e6;
-  s[Signal::kBrakePressureRear] = 3e6;
-  run(m, s, 1.0, nullptr);  // settle: tire deflections take up the slope force
-  const double x0 = m.framework().coordinates()(0);
-  run(m, s, 10.0, nullptr);
-  const double creep = std::abs(m.framework().coordinates()(0) - x0);
-  std::printf("grade 20 %%: creep over 10 s braked = %.3g mm\n", creep * 1e3);
-  EXPECT_LT(creep, 1e-3);
-  s[Signal::kBrakePressureFront] = 0;
-  s[Signal::kBrakePressureRear] = 0;
-  run(m, s, 3.0, nullptr);
-  const double rolled = m.framework().coordinates()(0) - x0;
-  std::printf("grade 20 %%: released, rolled %.2f m in 3 s, speed %.2f m/s\n", rolled,
-              m.framework().speeds()(0));
-  EXPECT_LT(rolled, -1.0);  // rolls back downhill
+TEST(Vehicle, GradeHoldCreepAndRollAwayAtOneAndTwoMilliseconds) {
+  for (double h : {1e-3, 2e-3}) {
+    VehicleParams p = sedan();
+    p.road.grade = 0.20;  // 20 % uphill in +x
+    VehicleModel m(p, h);
+    Signals s = driver_inputs();
+    s[Signal::kGearRequest] = 0;
+    s[Signal::kBrakePressureFront] = 3e6;
+    s[Signal::kBrakePressureRear] = 3e6;
+    run(m, s, 1.0, nullptr);  // settle: tire deflections take up the slope force
+    const double x0 = m.framework().coordinates()(0);
+    run(m, s, 10.0, nullptr);
+    const double creep = std::abs(m.framework().coordinates()(0) - x0);
+    std::printf("h=%.0f ms grade 20 %%: creep over 10 s braked = %.3g mm\n", h * 1e3, creep * 1e3);
+    EXPECT_LT(creep, 1e-3);
+    s[Signal::kBrakePressureFront] = 0;
+    s[Signal::kBrakePressureRear] = 0;
+    run(m, s, 3.0, nullptr);
+    const double rolled = m.framework().coordinates()(0) - x0;
+    std::printf("grade 20 %%: released, rolled %.2f m in 3 s, speed %.2f m/s\n", rolled,
+                m.framework().speeds()(0));
+    EXPECT_LT(rolled, -1.0);  // rolls back downhill
+  }
 }
 
 TEST(Vehicle, AccelerationAndCoastDown) {
@@ -402,6 +404,32 @@ TEST(Vehicle, DoubleLaneChangeClosedLoopAt60kmh) {
     EXPECT_LT(max_offset_lane3, 0.30);
     EXPECT_LT(max_offset_lane5, 0.39);
   }
+}
+
+TEST(Vehicle, GradeBrakeToStandstillHoldAndDriveAway) {
+  VehicleParams p = sedan();
+  p.road.grade = 0.20;
+  VehicleModel m(p, 1e-3);
+  m.set_forward_speed(5.0);  // rolling uphill in D, then braked to stand-still
+  Signals s = driver_inputs();
+  s[Signal::kBrakePressureFront] = 3e6;
+  s[Signal::kBrakePressureRear] = 1.5e6;
+  run(m, s, 4.0, nullptr);
+  EXPECT_NEAR(s[Signal::kVehicleSpeed], 0.0, 1e-3);
+  const double x0 = s[Signal::kPositionX];
+  run(m, s, 10.0, nullptr);
+  const double creep = std::abs(s[Signal::kPositionX] - x0);
+  s[Signal::kBrakePressureFront] = 0;
+  s[Signal::kBrakePressureRear] = 0;
+  s[Signal::kThrottlePedal] = 0.6;
+  run(m, s, 5.0, nullptr);
+  const double climbed = s[Signal::kPositionX] - x0;
+  std::printf(
+      "grade 20 %% in D: creep while held 10 s %.3g mm, drove %.2f m uphill in 5 s (%.1f km/h, "
+      "gear %d)\n",
+      creep * 1e3, climbed, 3.6 * s[Signal::kVehicleSpeed], static_cast<int>(s[Signal::kGear]));
+  EXPECT_LT(creep, 1e-3);
+  EXPECT_GT(climbed, 3.0);
 }
 }  // namespace
 }  // namespace rig::model::vehicle
