@@ -8,6 +8,7 @@
 #include <functional>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -430,6 +431,39 @@ TEST(Vehicle, GradeBrakeToStandstillHoldAndDriveAway) {
       creep * 1e3, climbed, 3.6 * s[Signal::kVehicleSpeed], static_cast<int>(s[Signal::kGear]));
   EXPECT_LT(creep, 1e-3);
   EXPECT_GT(climbed, 3.0);
+}
+
+/// Steady steering-wheel angle and torsion bar torque under a constant hand torque at 60 km/h.
+std::pair<double, double> torque_steer(bool assist_from_can, double can_assist_nm) {
+  VehicleParams p = sedan();
+  p.steering.torque_input = true;
+  VehicleModel m(p, 1e-3);
+  m.set_forward_speed(60 / 3.6);
+  Signals s = driver_inputs();
+  s[Signal::kGearRequest] = 3;
+  s[Signal::kThrottlePedal] = 0.15;
+  s[Signal::kSteeringWheelTorqueCmd] = 2.0;
+  if (assist_from_can) {
+    s.source[index(Signal::kAssistTorque)] = SignalSource::kCan;
+    s[Signal::kAssistTorque] = can_assist_nm;
+  }
+  run(m, s, 4.0, nullptr);
+  return {s[Signal::kSteeringWheelAngle], s[Signal::kTorsionBarTorque]};
+}
+
+TEST(Vehicle, SteeringByTorqueWithBoostCurveOrCanAssist) {
+  const auto [angle_boost, tb_boost] = torque_steer(false, 0);
+  const auto [angle_none, tb_none] = torque_steer(true, 0.0);  // ECU on CAN sends no assist
+  std::printf(
+      "hand torque 2 N m at 60 km/h: steering wheel %.3f rad with the boost curve, %.3f rad "
+      "with CAN assist = 0 (torsion bar %.2f / %.2f N m)\n",
+      angle_boost, angle_none, tb_boost, tb_none);
+  // the torsion bar carries the hand torque in steady state (column inertia and damping at rest)
+  EXPECT_NEAR(tb_boost, 2.0, 0.1);
+  EXPECT_NEAR(tb_none, 2.0, 0.1);
+  EXPECT_GT(angle_boost, 0.0);
+  // assist multiplies the rack force the same hand torque can hold: much more steering angle
+  EXPECT_GT(angle_boost, 2.0 * angle_none);
 }
 }  // namespace
 }  // namespace rig::model::vehicle
