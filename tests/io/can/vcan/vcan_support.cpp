@@ -129,6 +129,17 @@ int Child::wait(int timeout_ms) {
   return status_;
 }
 
+bool Child::exited() {
+  if (exited_) return true;
+  poll();
+  int st = 0;
+  if (waitpid(pid_, &st, WNOHANG) != pid_) return false;
+  poll();
+  exited_ = true;
+  status_ = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return true;
+}
+
 int Child::terminate() {
   if (!exited_) kill(pid_, SIGTERM);
   return wait(5000);

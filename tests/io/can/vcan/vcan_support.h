@@ -50,6 +50,8 @@ class Child {
   bool wait_for_line(const std::function<bool(const std::string&)>& pred, int timeout_ms);
   /// Waits for exit (up to timeout_ms, then SIGKILL); returns the exit status or -1.
   int wait(int timeout_ms);
+  /// True once the child has exited (non-blocking; never kills).
+  bool exited();
   /// SIGTERM then wait.
   int terminate();
   [[nodiscard]] const std::vector<std::string>& lines() const { return lines_; }
