@@ -10,26 +10,24 @@ TireDeflection::TireDeflection(VehicleBus& bus, const TireParams& tire, int whee
 
 void TireDeflection::rate(const Vector& s, Vector& f) const noexcept {
   const WheelBus& w = bus_.wheels[static_cast<std::size_t>(wheel_)];
-  const TmeasySlip slip = tmeasy_slip(w.curves, w.vx_mps, w.vy_mps, w.spin_radps,
-                                      w.radius_dynamic_m, velocity_floor_mps_);
+  const double f_per_slip = w.f_per_slip;  // eq. (16) at the start of the step
   const double rolling = w.radius_dynamic_m * std::abs(w.spin_radps);
   // eq. (24) longitudinal and its lateral counterpart
   f(0) = deflection_rate(s(0), w.vx_mps - w.radius_dynamic_m * w.spin_radps, rolling,
-                         w.curves.normalize_x, slip.f_per_slip, tire_.longitudinal_stiffness_npm,
+                         w.curves.normalize_x, f_per_slip, tire_.longitudinal_stiffness_npm,
                          tire_.longitudinal_damping_nspm);
-  f(1) = deflection_rate(s(1), w.vy_mps, rolling, w.curves.normalize_y, slip.f_per_slip,
+  f(1) = deflection_rate(s(1), w.vy_mps, rolling, w.curves.normalize_y, f_per_slip,
                          tire_.lateral_stiffness_npm, tire_.lateral_damping_nspm);
 }
 
 bool TireDeflection::rate_jacobian(const Vector& s, Matrix& df_ds) const noexcept {
   const WheelBus& w = bus_.wheels[static_cast<std::size_t>(wheel_)];
-  const TmeasySlip slip = tmeasy_slip(w.curves, w.vx_mps, w.vy_mps, w.spin_radps,
-                                      w.radius_dynamic_m, velocity_floor_mps_);
+  const double f_per_slip = w.f_per_slip;  // eq. (16) at the start of the step
   const double rolling = w.radius_dynamic_m * std::abs(w.spin_radps);
   double dx = 0, dy = 0;
-  (void)deflection_rate(s(0), 0, rolling, w.curves.normalize_x, slip.f_per_slip,
+  (void)deflection_rate(s(0), 0, rolling, w.curves.normalize_x, f_per_slip,
                         tire_.longitudinal_stiffness_npm, tire_.longitudinal_damping_nspm, &dx);
-  (void)deflection_rate(s(1), 0, rolling, w.curves.normalize_y, slip.f_per_slip,
+  (void)deflection_rate(s(1), 0, rolling, w.curves.normalize_y, f_per_slip,
                         tire_.lateral_stiffness_npm, tire_.lateral_damping_nspm, &dy);
   df_ds << dx, 0, 0, dy;
   return true;

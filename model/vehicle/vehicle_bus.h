@@ -21,6 +21,7 @@ struct WheelBus {
   double load_n = 0;
   double radius_dynamic_m = 0.3;
   TmeasyLoadCurves curves{};
+  double f_per_slip = 0;  ///< f(s) of eq. (16) at the start of the step (used by eq. 24)
   // subsystems
   double spin_radps = 0;         ///< wheel spin state (owned by WheelSpinStage)
   double steer_rad = 0;          ///< from the rack through the compliant tie rod

@@ -175,6 +175,9 @@ void VehicleModel::update_contacts() noexcept {
                                      t.vertical_stiffness_npm, t.vertical_damping_nspm);
     w.radius_dynamic_m = dynamic_radius_m(t.radius_unloaded_m, c.penetration_m);
     w.curves = tmeasy_curves(t, w.load_n, p_.road.friction);
+    w.f_per_slip = tmeasy_slip(w.curves, w.vx_mps, w.vy_mps, w.spin_radps, w.radius_dynamic_m,
+                               t.velocity_floor_mps)
+                       .f_per_slip;
   }
   bus_.carrier_speed_radps = drivetrain_->carrier_speed_radps();
 }

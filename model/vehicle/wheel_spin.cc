@@ -47,17 +47,16 @@ void WheelSpinStage::advance(double h) noexcept {
     const TireParams& tire = p_.axles[static_cast<std::size_t>(axle_of_wheel_[k])].tire;
     const double r = w.radius_dynamic_m;
     const double xe = bus_.deflection_m[2 * k];
-    const TmeasySlip slip =
-        tmeasy_slip(w.curves, w.vx_mps, w.vy_mps, w.spin_radps, r, tire.velocity_floor_mps);
+    const double f_per_slip = w.f_per_slip;  // eq. (16) at the start of the step
     const double rolling = r * std::abs(w.spin_radps);
     const double rate = deflection_rate(
-        xe, w.vx_mps - r * w.spin_radps, rolling, w.curves.normalize_x, slip.f_per_slip,
+        xe, w.vx_mps - r * w.spin_radps, rolling, w.curves.normalize_x, f_per_slip,
         tire.longitudinal_stiffness_npm, tire.longitudinal_damping_nspm);
     const double fx = tire.longitudinal_stiffness_npm * xe + tire.longitudinal_damping_nspm * rate;
     // d F_x / d w through the damping path (eq. 24, at fixed f)
     const double denom =
-        tire.longitudinal_damping_nspm * rolling * w.curves.normalize_x + slip.f_per_slip + 1e-9;
-    const double dfx_dw = tire.longitudinal_damping_nspm * slip.f_per_slip * r / denom;
+        tire.longitudinal_damping_nspm * rolling * w.curves.normalize_x + f_per_slip + 1e-9;
+    const double dfx_dw = tire.longitudinal_damping_nspm * f_per_slip * r / denom;
     double inertia = tire.spin_inertia_kgm2 + h * r * dfx_dw;
     const double ts = driven_[k] ? shaft_torque : 0.0;
     if (driven_[k])
