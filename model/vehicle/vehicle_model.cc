@@ -100,6 +100,21 @@ void VehicleModel::set_forward_speed(double speed_mps) noexcept {
   }
   drivetrain_->speeds()(1) = carrier / bus_.wheel_count;
   bus_.carrier_speed_radps = drivetrain_->speeds()(1);
+  // the automatic's gear for this speed (lowest gear below the part-load upshift point) and
+  // the engine turning with the locked-up converter
+  const auto& d = p_.drivetrain;
+  const int top = static_cast<int>(d.gear_ratios.size());
+  int gear = 1;
+  while (gear < top && d.gear_ratios[static_cast<std::size_t>(gear - 1)] * d.final_drive_ratio *
+                               std::abs(bus_.carrier_speed_radps) >
+                           d.upshift_speed_low_radps) {
+    ++gear;
+  }
+  bus_.gear = gear;
+  last_shift_s_ = time_s_;
+  const double turbine = d.gear_ratios[static_cast<std::size_t>(gear - 1)] * d.final_drive_ratio *
+                         bus_.carrier_speed_radps;
+  drivetrain_->speeds()(0) = std::max(d.idle_speed_radps, turbine);
 }
 
 double VehicleModel::wheel_load_n(int i) const noexcept {

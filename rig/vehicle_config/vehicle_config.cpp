@@ -177,4 +177,12 @@ model::vehicle::RoadParams read_road(io::StrictTable& m) {
   return r;
 }
 
+VehicleModelSettings read_vehicle_model(io::StrictTable& m) {
+  VehicleModelSettings v;
+  v.params = load_vehicle_file(m.existing_path("vehicle"));
+  v.params.road = read_road(m);
+  v.initial_speed_mps = m.number_in("initial_speed_mps", 0.0, -100, 100);
+  return v;
+}
+
 }  // namespace rig::vehicle_config

@@ -5,9 +5,11 @@
 /// with `file:line`. Load time only.
 
 #include <filesystem>
+#include <memory>
 
 #include "io/config/strict_table.h"
 #include "model/report.h"
+#include "model/stepped_model.h"
 #include "model/vehicle/vehicle_params.h"
 
 namespace rig::vehicle_config {
@@ -18,5 +20,21 @@ model::vehicle::VehicleParams load_vehicle_file(const std::filesystem::path& fil
 /// Reads the road keys (road_grade, road_bank, road_friction) of a maneuver's [model] table;
 /// absent keys keep the defaults (flat, dry).
 model::vehicle::RoadParams read_road(io::StrictTable& model_table);
+
+/// The vehicle keys of a rig configuration's [model] table (kind = "vehicle"):
+///   vehicle = "../vehicles/sedan.toml"   (relative to the configuration file)
+///   road_grade, road_bank (tan of the slopes), road_friction (mu), initial_speed_mps.
+struct VehicleModelSettings {
+  model::vehicle::VehicleParams params;
+  double initial_speed_mps = 0;
+};
+
+/// Reads the vehicle keys from [model] (the caller has read `kind`); leaves finish() to the caller.
+VehicleModelSettings read_vehicle_model(io::StrictTable& model_table);
+
+/// The model for the factory (library rig_vehicle_factory): a VehicleModel at step h, at rest
+/// or at the initial speed.
+std::unique_ptr<model::SteppedModel> make_vehicle_model(const VehicleModelSettings& settings,
+                                                        double step_s);
 
 }  // namespace rig::vehicle_config

@@ -220,16 +220,17 @@ TEST(Vehicle, SteadyStateCircleUndersteerGradientAndSaturation) {
   const double sw = 1.1;  // rad at the steering wheel: R ~ 40 m at low speed
   const double l = p.axles[0].position_x_m - p.axles[1].position_x_m;
   double sxx = 0, sxy = 0, sx = 0, sy = 0, n = 0, ay_max = 0;
-  double v_target = 4.0;
+  double v_target = 3.0;
   m.set_forward_speed(v_target);
   const auto control = [&](double, Signals& sig) {
     sig[Signal::kSteeringWheelAngleCmd] = sw;
     sig[Signal::kThrottlePedal] =
         std::clamp(0.1 + 0.8 * (v_target - sig[Signal::kVehicleSpeed]), 0.0, 1.0);
   };
-  for (double v_hold : {5.0, 6.0, 7.0, 8.0}) {
+  s[Signal::kGearRequest] = 1;  // no shifts between the steady states
+  for (double v_hold : {3.0, 4.0, 5.0, 6.0}) {
     v_target = v_hold;
-    run(m, s, 6.0, control);
+    run(m, s, 8.0, control);
     const double v = s[Signal::kVehicleSpeed], r = s[Signal::kYawRate];
     const double ay = v * r;  // steady state: a_y = v^2 / R = v r
     const double steer = 0.5 * (m.bus().wheels[0].steer_rad + m.bus().wheels[1].steer_rad);
@@ -237,8 +238,9 @@ TEST(Vehicle, SteadyStateCircleUndersteerGradientAndSaturation) {
     std::printf("circle v %.2f m/s: a_y %.3f m/s^2, delta - L/R = %.5f rad\n", v, ay, y);
     sxx += ay * ay, sxy += ay * y, sx += ay, sy += y, n += 1;
   }
-  run(m, s, 50.0, [&](double t, Signals& sig) {
-    v_target = 8.0 + 0.3 * (t - 24.0);
+  run(m, s, 58.0, [&](double t, Signals& sig) {
+    v_target = 6.0 + 0.3 * (t - 32.0);
+    sig[Signal::kGearRequest] = 99;
     control(t, sig);
     ay_max = std::max(ay_max, sig[Signal::kVehicleSpeed] * sig[Signal::kYawRate]);
   });
@@ -464,6 +466,27 @@ TEST(Vehicle, SteeringByTorqueWithBoostCurveOrCanAssist) {
   EXPECT_GT(angle_boost, 0.0);
   // assist multiplies the rack force the same hand torque can hold: much more steering angle
   EXPECT_GT(angle_boost, 2.0 * angle_none);
+}
+
+TEST(VehicleConfig, ManeuverFilesNameTheirVehicleAndRunAtOneMillisecond) {
+  int files = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(RIG_SOURCE_DIR "/config/maneuvers")) {
+    if (entry.path().extension() != ".toml") continue;
+    ++files;
+    const toml::table doc = io::load_toml_file(entry.path());
+    io::StrictTable top(doc, entry.path(), "top level");
+    io::StrictTable model_table = top.table("model");
+    EXPECT_EQ(model_table.string("kind"), "vehicle") << entry.path();
+    const auto settings = vehicle_config::read_vehicle_model(model_table);
+    model_table.finish();  // no unknown vehicle keys
+    VehicleModel m(settings.params, 1e-3);
+    m.set_forward_speed(settings.initial_speed_mps);
+    Signals s = driver_inputs();
+    run(m, s, 0.2, nullptr);
+    EXPECT_NEAR(s[Signal::kVehicleSpeed], settings.initial_speed_mps, 0.5) << entry.path();
+  }
+  EXPECT_EQ(files, 5);
 }
 }  // namespace
 }  // namespace rig::model::vehicle
