@@ -130,11 +130,11 @@ struct StepResult {
   double yaw_rate_final = 0, yaw_rate_peak = 0, t90 = -1, ay_final = 0, yaw_rate_spread_end = 0;
 };
 
-StepResult step_steer(double h, double sw_angle_rad) {
-  VehicleModel m(sedan(), h);
+StepResult step_steer(double h, double sw_angle_rad, const VehicleParams& params,
+                      double speed_mps = 80 / 3.6) {
+  VehicleModel m(params, h);
   Signals s = driver_inputs();
-  m.set_forward_speed(80 / 3.6);
-  s[Signal::kGearRequest] = 4;
+  m.set_forward_speed(speed_mps);
   StepResult r;
   double t_step = 1.0;
   double rmin = 1e9, rmax = -1e9;
@@ -145,7 +145,7 @@ StepResult step_steer(double h, double sw_angle_rad) {
     // ramp to the step in 0.1 s (ISO 7401: as fast as possible, < 0.15 s); throttle holds speed
     s[Signal::kSteeringWheelAngleCmd] = sw_angle_rad * std::clamp((t - t_step) / 0.1, 0.0, 1.0);
     s[Signal::kThrottlePedal] =
-        std::clamp(0.2 + 0.5 * (80 / 3.6 - s[Signal::kVehicleSpeed]), 0.0, 1.0);
+        std::clamp(0.2 + 0.5 * (speed_mps - s[Signal::kVehicleSpeed]), 0.0, 1.0);
     if (m.step(s) != StepStatus::kOk) {
       r.yaw_rate_final = NAN;
       return r;
@@ -169,7 +169,7 @@ StepResult step_steer(double h, double sw_angle_rad) {
 
 TEST(Vehicle, StepSteerSettlesAtOneAndTwoMilliseconds) {
   for (double h : {1e-3, 2e-3}) {
-    const StepResult r = step_steer(h, 0.5);  // ~29 deg at the steering wheel, ~4 m/s^2
+    const StepResult r = step_steer(h, 0.5, sedan());  // ~29 deg at the steering wheel, ~4 m/s^2
     ASSERT_TRUE(std::isfinite(r.yaw_rate_final)) << "h = " << h;
     std::printf(
         "step steer h=%.0f ms: yaw rate %.4f rad/s, a_y %.2f m/s^2, response time (90 %%) %.3f s, "
@@ -487,6 +487,23 @@ TEST(VehicleConfig, ManeuverFilesNameTheirVehicleAndRunAtOneMillisecond) {
     EXPECT_NEAR(s[Signal::kVehicleSpeed], settings.initial_speed_mps, 0.5) << entry.path();
   }
   EXPECT_EQ(files, 5);
+}
+
+TEST(Vehicle, TruckStepSteerSettlesAtOneAndTwoMilliseconds) {
+  const VehicleParams p =
+      vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml");
+  for (double h : {1e-3, 2e-3}) {
+    const StepResult r = step_steer(h, 1.0, p, 60 / 3.6);
+    ASSERT_TRUE(std::isfinite(r.yaw_rate_final)) << "h = " << h;
+    std::printf(
+        "truck step steer h=%.0f ms at 60 km/h: yaw rate %.4f rad/s, a_y %.2f m/s^2, response time "
+        "%.3f s, "
+        "overshoot %.1f %%\n",
+        h * 1e3, r.yaw_rate_final, r.ay_final, r.t90,
+        100 * (r.yaw_rate_peak / r.yaw_rate_final - 1));
+    EXPECT_GT(r.yaw_rate_final, 0.05);
+    EXPECT_LT(r.yaw_rate_spread_end, 0.01 * r.yaw_rate_final);
+  }
 }
 }  // namespace
 }  // namespace rig::model::vehicle
