@@ -22,6 +22,7 @@
 #include "io/can/bridge/can_bridge.h"
 #include "io/can/dbc/checksum.h"
 #include "tests/io/can/vcan/vcan_support.h"
+#include "tests/support/alloc_counter.h"
 
 namespace rig::io::can {
 namespace {
@@ -129,11 +130,17 @@ TEST(BridgeVcan, RecordedTrafficHasRatesCountersChecksumsAndValues) {
   out[Signal::kLateralAccel] = -2.5;       // Motorola, signed
   constexpr int kCycles = 3000;            // 3 s nominal
   Loop loop;
-  for (int k = 0; k < kCycles; ++k) {
-    const std::int64_t t = loop.next();
-    bridge->receive(t, in);
-    bridge->transmit(t, out);
+  std::uint64_t allocations = 0;
+  {
+    test::AllocationCounter count;
+    for (int k = 0; k < kCycles; ++k) {
+      const std::int64_t t = loop.next();
+      bridge->receive(t, in);
+      bridge->transmit(t, out);
+    }
+    allocations = count.count();
   }
+  EXPECT_EQ(allocations, 0u) << "CanBridge::receive/transmit allocated on the RT path";
   // Let candump catch up with the last frames, then stop it.
   const auto sent = counters_of(*bridge).frames_sent;
   std::size_t rig_lines = 0;
