@@ -76,5 +76,21 @@ TEST(MakeCanIo, WithoutSocketCanFailsWithAClearTransportError) {
   }
 }
 
+TEST(MakeCanIo, OnVcanOpensTheBusAndReportsItUp) {
+  if (!can_sockets_available()) GTEST_SKIP() << "needs AF_CAN and vcan0 (run via with-vcan)";
+  const fs::path file = write_rig_toml(
+      "[can]\ninterface = \"vcan0\"\nmapping = \"steering-bench.toml\"\nkernel_filter = true\n");
+  const auto io = make_can_io(settings_from(file));
+  ASSERT_NE(io, nullptr);
+  IoCounters c;
+  io->read_counters(c);
+  EXPECT_EQ(c.bus_state, BusState::kUp);
+  model::Signals s{};
+  io->receive(0, s);
+  io->transmit(0, s);  // t = 0: every TX message is due at the loop start
+  io->read_counters(c);
+  EXPECT_EQ(c.frames_sent, 5u);  // the five [[tx]] messages of steering-bench.toml
+}
+
 }  // namespace
 }  // namespace rig::io::can
