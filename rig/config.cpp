@@ -1,0 +1,106 @@
+#include "rig/config.h"
+
+#include <algorithm>
+#include <string_view>
+
+#include "io/config/config_error.h"
+#include "io/config/strict_table.h"
+
+namespace rig {
+namespace {
+
+RigSettings read_rig(io::StrictTable& t) {
+  RigSettings s;
+  if (t.has("period_s") && t.has("step_s"))
+    throw t.error("step_s", "give period_s or step_s, not both");
+  const char* period_key = t.has("step_s") ? "step_s" : "period_s";
+  if (t.has(period_key)) {
+    s.period_s = t.number(period_key);
+    if (!(s.period_s > 0.0) || s.period_s > 1.0)
+      throw t.error(period_key, "must be > 0 and <= 1 s");
+  }
+  s.duration_s = t.number_in("duration_s", 0.0, 0.0, 1e9);
+  s.priority = static_cast<int>(t.number_in("priority", 80, 1, 99));
+  s.cpu = static_cast<int>(t.number_in("cpu", -1, -1, 1023));
+  const std::string policy =
+      t.choice("overrun_policy", "skip", {"skip", "catch-up", "abort-after"});
+  s.policy = policy == "skip"       ? OverrunPolicy::kSkip
+             : policy == "catch-up" ? OverrunPolicy::kCatchUp
+                                    : OverrunPolicy::kAbortAfter;
+  s.abort_after = static_cast<int>(t.number_in("abort_after", 10, 1, 1e6));
+  s.status_interval_s = t.number_in("status_interval_s", 5.0, 0.1, 3600.0);
+  t.finish();
+  return s;
+}
+
+ModelSettings read_model(io::StrictTable& t) {
+  ModelSettings m;
+  m.kind = t.choice("kind", "quarter-car", {"quarter-car", "vehicle"});
+  if (m.kind == "vehicle") {  // vehicle file + road keys (rig/vehicle_config)
+    m.vehicle = vehicle_config::read_vehicle_model(t);
+    t.finish();
+    return m;
+  }
+  auto& q = m.quarter_car;
+  q.grade = t.number_in("grade", q.grade, -1.0, 1.0);
+  q.mass_kg = t.number_in("mass_kg", q.mass_kg, 1.0, 1e5);
+  q.max_drive_torque_nm = t.number_in("max_drive_torque_nm", q.max_drive_torque_nm, 0.0, 1e5);
+  q.brake_gain_nm_per_pa = t.number_in("brake_gain_nm_per_pa", q.brake_gain_nm_per_pa, 0.0, 1.0);
+  t.finish();
+  return m;
+}
+
+void read_routing(io::StrictTable& t, RigConfig& c) {
+  for (auto&& [key, node] : t.raw()) {
+    const std::string name(key.str());
+    const auto sig = model::signal_by_name(name);
+    if (!sig) throw t.error(name, "unknown signal '" + name + "'");
+    if (!model::info(*sig).is_input)
+      throw t.error(name, "'" + name + "' is an output; only inputs are routed");
+    const std::string src = t.choice(name, "driver", {"driver", "can"});
+    c.routing[model::index(*sig)] =
+        src == "can" ? model::SignalSource::kCan : model::SignalSource::kDriver;
+  }
+  t.finish();
+}
+
+}  // namespace
+
+std::string policy_name(OverrunPolicy policy, int abort_after) {
+  switch (policy) {
+    case OverrunPolicy::kSkip:
+      return "skip";
+    case OverrunPolicy::kCatchUp:
+      return "catch-up";
+    case OverrunPolicy::kAbortAfter:
+      return "abort-after=" + std::to_string(abort_after);
+  }
+  return "?";
+}
+
+RigConfig load_config(const std::filesystem::path& file) {
+  const toml::table doc = io::load_toml_file(file);
+  io::StrictTable top(doc, file, "top level");
+  RigConfig c;
+  c.file = file;
+  c.routing.fill(model::SignalSource::kModel);
+  if (auto t = top.optional_table("rig")) c.rig = read_rig(*t);
+  if (auto t = top.optional_table("model")) c.model = read_model(*t);
+  // Routing before the driver: a table column must not be routed to CAN.
+  if (auto t = top.optional_table("routing")) read_routing(*t, c);
+  if (auto t = top.optional_table("driver")) {
+    (void)t->choice("kind", "table", {"table"});
+    c.driver = driver::read_table_driver(*t);
+    for (const model::Signal s : c.driver->columns) {
+      auto& src = c.routing[model::index(s)];
+      if (src == model::SignalSource::kCan)
+        throw t->error("columns",
+                       "'" + std::string(model::info(s).name) + "' is routed to CAN in [routing]");
+      src = model::SignalSource::kDriver;
+    }
+  }
+  top.finish();  // unknown top-level sections
+  return c;
+}
+
+}  // namespace rig

@@ -1,0 +1,54 @@
+#pragma once
+/// @file
+/// The rig's configuration file: [rig] run settings, [model], [driver], [routing]. Each section
+/// is read by its owner's function; unknown sections and keys are ConfigErrors with file:line.
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "model/examples/quarter_car/quarter_car_params.h"
+#include "model/signals.h"
+#include "rig/driver/table_driver.h"
+#include "rig/vehicle_config/vehicle_config.h"
+
+namespace rig {
+
+enum class OverrunPolicy : std::uint8_t { kSkip, kCatchUp, kAbortAfter };
+
+/// [rig]
+struct RigSettings {
+  double period_s = 0.001;  ///< loop period = model step size
+  double duration_s = 0.0;  ///< 0: run until stopped
+  int priority = 80;        ///< SCHED_FIFO priority
+  int cpu = -1;             ///< CPU to pin the loop thread to, -1: none
+  OverrunPolicy policy = OverrunPolicy::kSkip;
+  int abort_after = 10;            ///< consecutive misses for kAbortAfter
+  double status_interval_s = 5.0;  ///< stderr / systemd STATUS summary interval
+};
+
+/// [model]
+struct ModelSettings {
+  std::string kind = "quarter-car";
+  model::examples::QuarterCarParams quarter_car{};
+  std::optional<vehicle_config::VehicleModelSettings> vehicle;  ///< kind = "vehicle"
+};
+
+struct RigConfig {
+  std::filesystem::path file;
+  RigSettings rig;
+  ModelSettings model;
+  std::optional<driver::TableDriverParams> driver;  ///< [driver] kind = "table"
+  /// Source of each input signal ([routing]); kDriver for inputs the driver table has.
+  std::array<model::SignalSource, model::kSignalCount> routing{};
+};
+
+/// Loads and validates a configuration file. Throws ConfigError("file:line: ...").
+RigConfig load_config(const std::filesystem::path& file);
+
+/// "skip", "catch-up" or "abort-after=N".
+std::string policy_name(OverrunPolicy policy, int abort_after);
+
+}  // namespace rig

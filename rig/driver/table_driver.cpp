@@ -1,0 +1,86 @@
+#include "rig/driver/table_driver.h"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+namespace rig::driver {
+
+TableDriverParams read_table_driver(io::StrictTable& t) {
+  TableDriverParams p;
+  const auto& raw = t.raw();
+  // columns/rows are arrays of strings/arrays, which StrictTable has no reader for: check the
+  // key set here instead of with finish().
+  for (auto&& [key, node] : raw) {
+    const std::string_view k = key.str();
+    if (k != "kind" && k != "columns" && k != "rows")
+      throw t.error(k, "unknown key '" + std::string(k) + "'");
+  }
+  const toml::array* columns = raw["columns"].as_array();
+  if (columns == nullptr) throw t.error("columns", "'columns' must be an array of signal names");
+  std::vector<std::string> names;
+  for (const auto& c : *columns) {
+    const auto* s = c.as_string();
+    if (s == nullptr) throw t.error("columns", "'columns' must hold strings");
+    names.push_back(s->get());
+  }
+  if (names.empty() || names.front() != "time_s")
+    throw t.error("columns", "the first column must be \"time_s\"");
+  for (std::size_t i = 1; i < names.size(); ++i) {
+    const auto sig = model::signal_by_name(names[i]);
+    if (!sig) throw t.error("columns", "unknown signal '" + names[i] + "'");
+    if (!model::info(*sig).is_input)
+      throw t.error("columns", "'" + names[i] + "' is an output, not an input");
+    if (std::find(p.columns.begin(), p.columns.end(), *sig) != p.columns.end())
+      throw t.error("columns", "duplicate column '" + names[i] + "'");
+    p.columns.push_back(*sig);
+  }
+  const toml::array* rows = raw["rows"].as_array();
+  if (rows == nullptr || rows->empty())
+    throw t.error("rows", "'rows' must be a non-empty array of arrays");
+  for (const auto& row_node : *rows) {
+    const auto* row = row_node.as_array();
+    if (row == nullptr || row->size() != names.size())
+      throw t.error(
+          "rows", "every row needs " + std::to_string(names.size()) + " numbers (one per column)");
+    for (std::size_t i = 0; i < row->size(); ++i) {
+      const auto v = (*row)[i].value<double>();
+      if (!v) throw t.error("rows", "rows must hold numbers");
+      if (i == 0) {
+        if (!p.times_s.empty() && *v <= p.times_s.back())
+          throw t.error("rows", "time_s must increase strictly");
+        p.times_s.push_back(*v);
+      } else {
+        p.values.push_back(*v);
+      }
+    }
+  }
+  return p;
+}
+
+}  // namespace rig::driver
+
+namespace rig::driver {
+
+TableDriver::TableDriver(TableDriverParams params) : params_(std::move(params)) {}
+
+void TableDriver::update(double sim_time_s, model::Signals& signals) noexcept {
+  const auto& times = params_.times_s;
+  const std::size_t n_cols = params_.columns.size();
+  // Row i is the last row with time <= t (clamped to the table); interpolate towards row i+1.
+  const auto it = std::upper_bound(times.begin(), times.end(), sim_time_s);
+  std::size_t i = it == times.begin() ? 0 : static_cast<std::size_t>(it - times.begin()) - 1;
+  double w = 0.0;
+  if (it != times.begin() && it != times.end()) {
+    w = (sim_time_s - times[i]) / (times[i + 1] - times[i]);
+  }
+  for (std::size_t c = 0; c < n_cols; ++c) {
+    const model::Signal s = params_.columns[c];
+    if (signals.source[model::index(s)] != model::SignalSource::kDriver) continue;
+    const double a = params_.values[i * n_cols + c];
+    const double b = w > 0.0 ? params_.values[(i + 1) * n_cols + c] : a;
+    signals.set(s, a + w * (b - a));
+  }
+}
+
+}  // namespace rig::driver

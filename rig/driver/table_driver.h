@@ -1,0 +1,34 @@
+#pragma once
+/// @file
+/// An open-loop driver: a time table of named input signals, linearly interpolated in time and
+/// held constant before the first and after the last row.
+
+#include <cstddef>
+#include <vector>
+
+#include "io/config/strict_table.h"
+#include "rig/driver/driver.h"
+
+namespace rig::driver {
+
+struct TableDriverParams {
+  std::vector<model::Signal> columns;  ///< the input signals, in column order
+  std::vector<double> times_s;         ///< strictly increasing
+  std::vector<double> values;          ///< row-major, times_s.size() x columns.size()
+};
+
+/// Reads `[driver] kind = "table"`: columns = ["time_s", <input names>...], rows = [[t, v...]...].
+/// Throws ConfigError(file:line) on unknown names, non-input signals, ragged or unsorted rows.
+TableDriverParams read_table_driver(io::StrictTable& driver_table);
+
+class TableDriver final : public Driver {
+ public:
+  explicit TableDriver(TableDriverParams params);
+  /// Writes each column whose source is kDriver; O(log rows), no allocation.
+  void update(double sim_time_s, model::Signals& signals) noexcept override;
+
+ private:
+  TableDriverParams params_;
+};
+
+}  // namespace rig::driver

@@ -1,0 +1,157 @@
+#include "rig/summary.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace rig {
+namespace {
+
+std::string fmt(const char* format, auto... args) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, format, args...);
+  return buf;
+}
+
+long long ll(std::int64_t v) { return static_cast<long long>(v); }
+unsigned long long ull(std::uint64_t v) { return static_cast<unsigned long long>(v); }
+
+std::string quantiles_json(const LogHistogram& h) {
+  return fmt("{\"p50\":%lld,\"p99\":%lld,\"p999\":%lld,\"max\":%lld,\"count\":%llu}",
+             ll(h.quantile(0.5)), ll(h.quantile(0.99)), ll(h.quantile(0.999)), ll(h.max()),
+             ull(h.count()));
+}
+
+std::string bins_json(const LogHistogram& h) {
+  std::string out = "[";
+  bool first = true;
+  for (const auto& b : h.bins()) {
+    out += fmt("%s{\"low_ns\":%lld,\"high_ns\":%lld,\"count\":%llu}", first ? "" : ",",
+               ll(b.low_ns), ll(b.high_ns), ull(b.count));
+    first = false;
+  }
+  return out + "]";
+}
+
+const char* bus_state_name(io::BusState s) {
+  switch (s) {
+    case io::BusState::kDisabled:
+      return "disabled";
+    case io::BusState::kUp:
+      return "up";
+    case io::BusState::kDown:
+      return "down";
+  }
+  return "?";
+}
+
+/// A decade histogram for humans: counts in [1, 10) us, [10, 100) us, ...
+std::string decades(const LogHistogram& h) {
+  std::string out;
+  std::array<std::uint64_t, 8> counts{};  // <1us, 1-10us, ..., >=1s
+  for (const auto& b : h.bins()) {
+    const double v = static_cast<double>(b.low_ns) / 1000.0;
+    std::size_t d = v < 1.0 ? 0 : static_cast<std::size_t>(std::floor(std::log10(v))) + 1;
+    if (d > 7) d = 7;
+    counts[d] += b.count;
+  }
+  const char* labels[] = {"    <1 us",  "  1-10 us",  " 10-100 us", "0.1-1 ms ",
+                          "  1-10 ms ", " 10-100 ms", "0.1-1 s  ",  "   >=1 s "};
+  const std::uint64_t total = h.count() == 0 ? 1 : h.count();
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    if (counts[i] == 0) continue;
+    const int bar =
+        static_cast<int>(std::ceil(40.0 * std::log10(1.0 + static_cast<double>(counts[i])) /
+                                   std::log10(1.0 + static_cast<double>(total))));
+    out += fmt("    %s %10llu %s\n", labels[i], ull(counts[i]),
+               std::string(static_cast<std::size_t>(bar), '#').c_str());
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string summary_line(const Executive& e) {
+  const auto& l = e.lateness();
+  const auto& c = e.compute();
+  return fmt(
+      "cycles %llu, misses %llu, sim %.3f s, lateness p50/p99/p99.9/max %.1f/%.1f/%.1f/%.1f us, "
+      "compute p50/p99/max %.1f/%.1f/%.1f us",
+      ull(e.cycles()), ull(e.deadline_misses()), e.sim_time_s(),
+      static_cast<double>(l.quantile(0.5)) / 1e3, static_cast<double>(l.quantile(0.99)) / 1e3,
+      static_cast<double>(l.quantile(0.999)) / 1e3, static_cast<double>(l.max()) / 1e3,
+      static_cast<double>(c.quantile(0.5)) / 1e3, static_cast<double>(c.quantile(0.99)) / 1e3,
+      static_cast<double>(c.max()) / 1e3);
+}
+
+std::string summary_report(const Executive& e, const SummaryExtras& x) {
+  const auto& info = e.run_info();
+  std::string out = "rig summary (" + x.stop_reason + ")\n  " + summary_line(e) + "\n";
+  out +=
+      fmt("  wall %.3f s, drift (sim - loop clock) %.6f s, skipped periods %llu, snapshots dropped "
+          "%llu\n",
+          x.wall_time_s, e.sim_time_s() - e.loop_time_s(), ull(e.skipped_periods()),
+          ull(e.snapshots_dropped()));
+  out += fmt("  rt: SCHED_FIFO %s (priority %d), mlockall %s, cpu %d, policy %s%s\n",
+             info.sched_fifo ? "yes" : "NO", info.priority, info.memory_locked ? "yes" : "NO",
+             info.cpu, info.policy.c_str(), info.offline ? ", offline" : "");
+  out += "  lateness histogram:\n" + decades(e.lateness());
+  out += "  compute histogram:\n" + decades(e.compute());
+  return out;
+}
+
+std::string summary_json(const Executive& e, const SummaryExtras& x) {
+  const auto& info = e.run_info();
+  std::string j = "{\n";
+  j += fmt("  \"cycles\": %llu,\n  \"deadline_misses\": %llu,\n", ull(e.cycles()),
+           ull(e.deadline_misses()));
+  j += fmt("  \"sim_time_s\": %.9f,\n  \"wall_time_s\": %.9f,\n  \"drift_s\": %.9f,\n",
+           e.sim_time_s(), x.wall_time_s, e.sim_time_s() - e.loop_time_s() + 0.0);
+  j += fmt("  \"period_s\": %.9g,\n  \"offline\": %s,\n", info.period_s,
+           info.offline ? "true" : "false");
+  j += "  \"lateness_ns\": " + quantiles_json(e.lateness()) + ",\n";
+  j += "  \"compute_ns\": " + quantiles_json(e.compute()) + ",\n";
+  static constexpr const char* kPhases[] = {"inputs", "driver", "model", "outputs", "handoff"};
+  j += "  \"phase_ns\": {";
+  for (std::size_t p = 0; p < io::kPhaseCount; ++p) {
+    j += fmt("%s\"%s\": ", p == 0 ? "" : ", ", kPhases[p]) +
+         quantiles_json(e.phase(static_cast<io::Phase>(p)));
+  }
+  j += "},\n";
+  j += "  \"histogram\": {\"lateness_ns\": " + bins_json(e.lateness()) +
+       ",\n                \"compute_ns\": " + bins_json(e.compute()) + "},\n";
+  j +=
+      fmt("  \"rt\": {\"sched_fifo\": %s, \"priority\": %d, \"memory_locked\": %s, \"cpu\": %d},\n",
+          info.sched_fifo ? "true" : "false", info.priority, info.memory_locked ? "true" : "false",
+          info.cpu);
+  j += "  \"policy\": \"" + info.policy + "\",\n";
+  j += fmt(
+      "  \"skipped_periods\": %llu,\n  \"snapshots_dropped\": %llu,\n  \"events_lost\": %llu,\n",
+      ull(e.skipped_periods()), ull(e.snapshots_dropped()), ull(x.events_lost));
+  const io::IoCounters c = e.can_counters();
+  j +=
+      fmt("  \"can\": {\"bus_state\": \"%s\", \"frames_received\": %llu, \"frames_sent\": %llu, "
+          "\"timeouts\": %llu, "
+          "\"checksum_failures\": %llu, \"counter_failures\": %llu, \"bad_frames\": %llu, "
+          "\"unknown_frames\": %llu, "
+          "\"error_frames\": %llu, \"out_of_range\": %llu, \"send_no_buffer\": %llu, "
+          "\"send_dropped\": %llu, "
+          "\"reopens\": %llu},\n",
+          bus_state_name(c.bus_state), ull(c.frames_received), ull(c.frames_sent), ull(c.timeouts),
+          ull(c.checksum_failures), ull(c.counter_failures), ull(c.bad_frames),
+          ull(c.unknown_frames), ull(c.error_frames), ull(c.out_of_range), ull(c.send_no_buffer),
+          ull(c.send_dropped), ull(c.reopens));
+  j += "  \"outputs\": {";
+  bool first = true;
+  for (const auto& s : model::kSignalTable) {
+    if (s.is_input || !e.signals().valid[model::index(s.id)]) continue;
+    j += fmt("%s\"%s\": %.17g", first ? "" : ", ", std::string(s.name).c_str(),
+             e.signals().value[model::index(s.id)]);
+    first = false;
+  }
+  j += "},\n";
+  j += "  \"stop_reason\": \"" + x.stop_reason + "\",\n";
+  j += fmt("  \"exit_code\": %d\n}\n", x.exit_code);
+  return j;
+}
+
+}  // namespace rig

@@ -1,0 +1,27 @@
+#pragma once
+/// @file
+/// The run summary: a one-line status (stderr, systemd STATUS=), a multi-line report at exit and
+/// the --summary-json document.
+
+#include <string>
+
+#include "rig/executive.h"
+
+namespace rig {
+
+struct SummaryExtras {
+  double wall_time_s = 0;  ///< real elapsed time of the run (CLOCK_MONOTONIC)
+  std::string stop_reason;
+  int exit_code = 0;
+  std::uint64_t events_lost = 0;
+};
+
+/// "cycles 12000, misses 3, lateness p50/p99/p99.9/max 12/40/80/210 us, compute ..."
+std::string summary_line(const Executive& exec);
+/// Multi-line report including a log-scale lateness histogram.
+std::string summary_report(const Executive& exec, const SummaryExtras& extras);
+/// The JSON document (keys: cycles, deadline_misses, sim_time_s, wall_time_s, drift_s,
+/// lateness_ns, compute_ns, phase_max_ns, histogram, rt, policy, can, outputs, ...).
+std::string summary_json(const Executive& exec, const SummaryExtras& extras);
+
+}  // namespace rig
