@@ -1,0 +1,378 @@
+/// Executive, statistics, ring, table driver and configuration tests (fake clock, no sleeping).
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <string>
+
+#include "io/config/config_error.h"
+#include "io/log/event_log.h"
+#include "rig/config.h"
+#include "rig/driver/table_driver.h"
+#include "rig/executive.h"
+#include "rig/log_histogram.h"
+#include "rig/model_factory.h"
+#include "rig/spsc_ring.h"
+#include "tests/rig/test_model.h"
+#include "tests/support/alloc_counter.h"
+
+namespace rig {
+namespace {
+
+using model::Signal;
+
+/// A scripted clock: sleeping jumps to the deadline plus a per-cycle wake-up lateness; compute
+/// time is charged explicitly with advance().
+class FakeClock final : public Clock {
+ public:
+  std::int64_t now_ns() noexcept override { return now_; }
+  void sleep_until(std::int64_t deadline) noexcept override {
+    if (deadline > now_) now_ = deadline;
+    now_ += next_wake_lateness_ns;
+    next_wake_lateness_ns = 0;
+  }
+  std::int64_t realtime_ns() noexcept override { return now_; }
+  void advance(std::int64_t ns) { now_ += ns; }
+  std::int64_t next_wake_lateness_ns = 0;
+
+ private:
+  std::int64_t now_ = 1'000'000'000;
+};
+
+std::string read_file(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+std::filesystem::path temp_path(const std::string& name) {
+  return std::filesystem::temp_directory_path() /
+         ("rig_exec_test_" + std::to_string(::getpid()) + "_" + name);
+}
+
+struct Harness {
+  explicit Harness(ExecutiveParams p, std::string log_path = "")
+      : model(p.period_s), log(log_path), exec(p, clock, model, nullptr, {}, {}, log, routing()) {}
+  static std::array<model::SignalSource, model::kSignalCount> routing() {
+    std::array<model::SignalSource, model::kSignalCount> r{};
+    return r;
+  }
+  FakeClock clock;
+  test::OscillatorModel model;
+  io::EventLog log;
+  Executive exec;
+};
+
+// ---- LogHistogram ----
+TEST(LogHistogram, BucketsAreContiguousAndOrdered) {
+  for (int b = 0; b + 1 < LogHistogram::kBuckets; ++b) {
+    EXPECT_EQ(LogHistogram::bucket_high(b) + 1, LogHistogram::bucket_low(b + 1)) << b;
+    EXPECT_EQ(LogHistogram::bucket_of(LogHistogram::bucket_low(b)), b);
+    EXPECT_EQ(LogHistogram::bucket_of(LogHistogram::bucket_high(b)), b);
+  }
+  // 16 sub-buckets per octave: 1000 ns lies in [992, 1023] (octave 512..1023, width 32).
+  EXPECT_EQ(LogHistogram::bucket_low(LogHistogram::bucket_of(1000)), 992);
+  EXPECT_EQ(LogHistogram::bucket_high(LogHistogram::bucket_of(1000)), 1023);
+}
+
+TEST(LogHistogram, QuantilesOfHandMadeData) {
+  LogHistogram h;
+  EXPECT_EQ(h.quantile(0.5), 0);
+  // 990 values of 10 ns (exact buckets below 16 ns), 9 of 1000 ns, 1 of 5'000'000 ns.
+  for (int i = 0; i < 990; ++i) h.add(10);
+  for (int i = 0; i < 9; ++i) h.add(1000);
+  h.add(5'000'000);
+  EXPECT_EQ(h.count(), 1000u);
+  EXPECT_EQ(h.quantile(0.5), 10);
+  EXPECT_EQ(h.quantile(0.99), 10);        // rank 990 is still a 10
+  EXPECT_EQ(h.quantile(0.999), 1023);     // rank 999: bucket [992, 1023]
+  EXPECT_EQ(h.quantile(1.0), 5'000'000);  // capped at the exact max
+  EXPECT_EQ(h.max(), 5'000'000);
+  h.add(-5);  // negative lateness counts as 0
+  EXPECT_EQ(h.bucket_count(0), 1u);
+}
+
+// ---- SpscRing ----
+TEST(SpscRing, FullRingRefusesAndOrderIsKept) {
+  SpscRing<int> ring(4);
+  for (int i = 0; i < 4; ++i) EXPECT_TRUE(ring.push(i));
+  EXPECT_FALSE(ring.push(99));
+  for (int i = 0; i < 4; ++i) {
+    ASSERT_NE(ring.front(), nullptr);
+    EXPECT_EQ(*ring.front(), i);
+    ring.release();
+  }
+  EXPECT_EQ(ring.front(), nullptr);
+}
+
+// ---- Executive with a fake clock ----
+TEST(Executive, CountsCyclesAndStatisticsWithoutMisses) {
+  ExecutiveParams p;
+  p.duration_s = 0.1;
+  Harness hx(p);
+  hx.model.on_step = [&](std::uint64_t) { hx.clock.advance(200'000); };  // 0.2 ms compute
+  EXPECT_EQ(hx.exec.run_loop(), StopReason::kDuration);
+  EXPECT_EQ(hx.exec.cycles(), 100u);
+  EXPECT_EQ(hx.exec.deadline_misses(), 0u);
+  EXPECT_EQ(hx.exec.lateness().max(), 0);
+  EXPECT_EQ(hx.exec.compute().max(), 200'000);
+  EXPECT_EQ(hx.exec.phase(io::Phase::kModel).max(), 200'000);
+  EXPECT_DOUBLE_EQ(hx.exec.sim_time_s(), 0.1);
+  // Drift = sim - loop clock: the last cycle (deadline +100 ms) ends 0.2 ms after its deadline.
+  EXPECT_NEAR(hx.exec.sim_time_s() - hx.exec.loop_time_s(), -0.0002, 1e-12);
+  EXPECT_EQ(hx.exec.drain_snapshots(), 100u);
+}
+
+TEST(Executive, LatenessIsWakeMinusDeadline) {
+  ExecutiveParams p;
+  p.duration_s = 0.01;
+  Harness hx(p);
+  hx.model.on_step = [&](std::uint64_t n) {
+    if (n == 3) hx.clock.next_wake_lateness_ns = 70'000;  // the next cycle wakes 70 us late
+  };
+  hx.exec.run_loop();
+  EXPECT_EQ(hx.exec.cycles(), 10u);
+  EXPECT_EQ(hx.exec.lateness().max(), 70'000);
+  EXPECT_EQ(hx.exec.lateness().quantile(0.5), 0);
+  EXPECT_EQ(hx.exec.deadline_misses(), 0u);
+}
+
+TEST(Executive, SkipDropsMissedPeriodsAndStaysPhaseAligned) {
+  ExecutiveParams p;
+  p.duration_s = 0.1;
+  p.policy = OverrunPolicy::kSkip;
+  const auto log_path = temp_path("skip.jsonl");
+  {
+    Harness hx(p, log_path.string());
+    hx.log.start();
+    // Cycle 10's step takes 3.5 ms: its work ends 3.5 ms after its deadline -> miss; the next
+    // deadlines at +1, +2, +3 ms have passed, so 3 periods are skipped and cycle 11 aims at +4 ms.
+    hx.model.on_step = [&](std::uint64_t n) { hx.clock.advance(n == 10 ? 3'500'000 : 100'000); };
+    EXPECT_EQ(hx.exec.run_loop(), StopReason::kDuration);
+    EXPECT_EQ(hx.exec.deadline_misses(), 1u);
+    EXPECT_EQ(hx.exec.skipped_periods(), 3u);
+    EXPECT_EQ(hx.exec.cycles(), 97u);        // 100 deadlines, 3 skipped
+    EXPECT_EQ(hx.exec.lateness().max(), 0);  // phase-aligned: nobody wakes late
+    // Drift: 3 periods lost, and the last cycle ends 0.1 ms after its deadline.
+    EXPECT_NEAR(hx.exec.sim_time_s() - hx.exec.loop_time_s(), -0.003 - 0.0001, 1e-12);
+    hx.log.stop();
+  }
+  const std::string log = read_file(log_path);
+  EXPECT_NE(log.find("\"cycle\":10,"), std::string::npos) << log;
+  EXPECT_NE(log.find("\"action\":\"skip:3\""), std::string::npos) << log;
+  EXPECT_NE(log.find("\"model\":3500000"), std::string::npos) << log;
+  EXPECT_NE(log.find("\"consecutive_misses\":1"), std::string::npos) << log;
+  std::filesystem::remove(log_path);
+}
+
+TEST(Executive, CatchUpRunsMissedStepsBackToBack) {
+  ExecutiveParams p;
+  p.duration_s = 0.1;
+  p.policy = OverrunPolicy::kCatchUp;
+  Harness hx(p);
+  hx.model.on_step = [&](std::uint64_t n) { hx.clock.advance(n == 10 ? 3'500'000 : 100'000); };
+  hx.exec.run_loop();
+  EXPECT_EQ(hx.exec.cycles(), 100u);  // every step is run: simulated time tracks wall time
+  EXPECT_EQ(hx.exec.skipped_periods(), 0u);
+  // Cycle 10 ends at +3.5 ms; cycle 11 (deadline +1 ms) wakes 2.5 ms late, 12 at 1.6 ms, 13 at
+  // 0.7 ms; cycles 11 and 12 end after their next deadline too -> 3 misses in a row.
+  EXPECT_EQ(hx.exec.lateness().max(), 2'500'000);
+  EXPECT_EQ(hx.exec.deadline_misses(), 3u);
+  EXPECT_DOUBLE_EQ(hx.exec.sim_time_s(), 0.1);
+}
+
+TEST(Executive, AbortAfterNConsecutiveMisses) {
+  ExecutiveParams p;
+  p.duration_s = 1.0;
+  p.policy = OverrunPolicy::kAbortAfter;
+  p.abort_after = 3;
+  Harness hx(p);
+  // From step 20 on, every step takes 1.5 ms: each cycle misses.
+  hx.model.on_step = [&](std::uint64_t n) { hx.clock.advance(n >= 20 ? 1'500'000 : 100'000); };
+  EXPECT_EQ(hx.exec.run_loop(), StopReason::kAbortAfter);
+  EXPECT_EQ(hx.exec.cycles(), 23u);
+  EXPECT_EQ(hx.exec.deadline_misses(), 3u);
+}
+
+TEST(Executive, StopsCleanlyOnNonFiniteModel) {
+  ExecutiveParams p;
+  p.duration_s = 1.0;
+  const auto log_path = temp_path("nan.jsonl");
+  {
+    Harness hx(p, log_path.string());
+    hx.model.nan_at_step = 42;
+    EXPECT_EQ(hx.exec.run_loop(), StopReason::kNonFinite);
+    EXPECT_EQ(hx.exec.cycles(), 43u);
+    hx.log.stop();
+  }
+  EXPECT_NE(read_file(log_path).find("\"event\":\"non_finite\""), std::string::npos);
+  std::filesystem::remove(log_path);
+}
+
+TEST(Executive, RequestStopEndsTheLoop) {
+  ExecutiveParams p;  // duration 0: forever
+  Harness hx(p);
+  hx.model.on_step = [&](std::uint64_t n) {
+    if (n == 7) hx.exec.request_stop();
+  };
+  EXPECT_EQ(hx.exec.run_loop(), StopReason::kRequested);
+  EXPECT_EQ(hx.exec.cycles(), 8u);
+}
+
+TEST(EventLog, OverflowWritesTheLostCount) {
+  const auto log_path = temp_path("overflow.jsonl");
+  {
+    io::EventLog log(log_path.string(), 8);
+    for (int i = 0; i < 20; ++i) log.event(0, i, "e", "x");  // writer not started: 12 lost
+    EXPECT_EQ(log.lost(), 12u);
+    log.stop();
+  }
+  const std::string text = read_file(log_path);
+  EXPECT_NE(text.find("{\"event\":\"ring_overflow\",\"lost\":12}"), std::string::npos) << text;
+  std::filesystem::remove(log_path);
+}
+
+// ---- Table driver ----
+TEST(TableDriver, InterpolatesLinearlyAndHoldsEnds) {
+  driver::TableDriverParams p;
+  p.columns = {Signal::kThrottlePedal, Signal::kBrakePressureFront};
+  p.times_s = {1.0, 2.0, 4.0};
+  p.values = {0.0, 0.0, 1.0, 10.0, 0.5, 30.0};
+  driver::TableDriver d(p);
+  model::Signals s;
+  s.source[model::index(Signal::kThrottlePedal)] = model::SignalSource::kDriver;
+  s.source[model::index(Signal::kBrakePressureFront)] = model::SignalSource::kCan;  // not ours
+  s[Signal::kBrakePressureFront] = -7.0;
+  d.update(0.0, s);
+  EXPECT_DOUBLE_EQ(s[Signal::kThrottlePedal], 0.0);
+  d.update(1.5, s);
+  EXPECT_DOUBLE_EQ(s[Signal::kThrottlePedal], 0.5);
+  d.update(3.0, s);
+  EXPECT_DOUBLE_EQ(s[Signal::kThrottlePedal], 0.75);
+  d.update(9.0, s);
+  EXPECT_DOUBLE_EQ(s[Signal::kThrottlePedal], 0.5);
+  EXPECT_DOUBLE_EQ(s[Signal::kBrakePressureFront], -7.0);  // CAN-routed input untouched
+}
+
+// ---- Configuration ----
+struct ConfigCase {
+  std::string text;
+  std::string message;  // expected in the error after "file:line: "
+  int line;
+};
+
+TEST(Config, BadInputGivesFileLine) {
+  const std::vector<ConfigCase> cases = {
+      {"[rig]\nperiod_s = 0.001\nbogus = 1\n", "unknown key 'bogus'", 3},
+      {"[rig]\n\nperiod_s = 0.0\n", "must be > 0", 3},
+      {"[rig]\nperiod_s = 2.0\n", "must be > 0", 2},
+      {"[rig]\noverrun_policy = \"sometimes\"\n", "unknown value 'sometimes'", 2},
+      {"[rig]\n[rigg]\nx = 1\n", "unknown key 'rigg'", 2},
+      {"[routing]\nthrottle_pedal = \"ecu\"\n", "unknown value 'ecu'", 2},
+      {"[routing]\nvehicle_speed_mps = \"driver\"\n", "is an output", 2},
+      {"[driver]\ncolumns = [\"time_s\", \"throttle\"]\nrows = [[0, 1]]\n",
+       "unknown signal 'throttle'", 2},
+      {"[driver]\ncolumns = [\"time_s\", \"throttle_pedal\"]\nrows = [[1, 1], [0, 1]]\n",
+       "increase", 3},
+      {"[model]\nkind = \"bus\"\n", "unknown value 'bus'", 2},
+  };
+  for (const auto& c : cases) {
+    const auto file = temp_path("bad.toml");
+    std::ofstream(file) << c.text;
+    try {
+      (void)load_config(file);
+      ADD_FAILURE() << "no error for:\n" << c.text;
+    } catch (const io::ConfigError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(file.string() + ":" + std::to_string(c.line) + ":", 0), 0u) << what;
+      EXPECT_NE(what.find(c.message), std::string::npos) << what;
+    }
+    std::filesystem::remove(file);
+  }
+  EXPECT_THROW((void)load_config("/nonexistent/rig.toml"), io::ConfigError);
+}
+
+TEST(Config, DefaultConfigReproducesThePaperManeuver) {
+  const RigConfig c = load_config(std::filesystem::path(RIG_SOURCE_DIR) / "config/rig.toml");
+  EXPECT_DOUBLE_EQ(c.rig.period_s, 0.001);
+  EXPECT_DOUBLE_EQ(c.model.quarter_car.grade, 0.10);
+  ASSERT_TRUE(c.driver.has_value());
+  driver::TableDriver d(*c.driver);
+  model::Signals s;
+  s.source = c.routing;
+  const auto torque = [&](double t) {
+    d.update(t, s);
+    return s[Signal::kThrottlePedal] * c.model.quarter_car.max_drive_torque_nm;
+  };
+  const auto brake = [&](double t) {
+    d.update(t, s);
+    return s[Signal::kBrakePressureFront] * c.model.quarter_car.brake_gain_nm_per_pa;
+  };
+  EXPECT_DOUBLE_EQ(torque(0.0), 1000.0);
+  EXPECT_DOUBLE_EQ(torque(5.999), 1000.0);
+  EXPECT_DOUBLE_EQ(torque(6.0), 0.0);
+  EXPECT_DOUBLE_EQ(brake(8.0), 0.0);
+  EXPECT_NEAR(brake(8.25), 750.0, 1e-9);
+  EXPECT_NEAR(brake(8.5), 1500.0, 1e-9);
+  EXPECT_NEAR(brake(17.999), 1500.0, 1e-9);
+  EXPECT_DOUBLE_EQ(brake(18.0), 0.0);
+}
+
+// ---- Zero allocation on the loop thread ----
+class AllocationProbe final : public CycleHook {
+ public:
+  void on_cycle(std::uint64_t cycle) noexcept override {
+    if (cycle == 100) at_100 = test::thread_allocation_count();
+    last = test::thread_allocation_count();
+    last_cycle = cycle;
+  }
+  std::uint64_t at_100 = 0, last = 0, last_cycle = 0;
+};
+
+/// A sink that copies a value out of each snapshot (so the dispatcher really runs).
+class CountingSink final : public io::SnapshotSink {
+ public:
+  void start(const io::RunInfo&) override {}
+  void consume(const io::Snapshot& s, std::uint64_t dropped) override {
+    ++count;
+    lost += dropped;
+    last_x = s.signals[Signal::kPositionX];
+  }
+  void stop() override { stopped = true; }
+  std::uint64_t count = 0, lost = 0;
+  double last_x = 0;
+  bool stopped = false;
+};
+
+TEST(Executive, LoopThreadDoesNotAllocate) {
+  const RigConfig config = load_config(std::filesystem::path(RIG_SOURCE_DIR) / "config/rig.toml");
+  auto model = make_model(config);
+  driver::TableDriver driver(*config.driver);
+  VirtualClock clock;
+  io::EventLog log("");
+  CountingSink sink;
+  ExecutiveParams p;
+  p.offline = true;  // the same loop, no SCHED_FIFO needed in the test
+  p.duration_s = 12.0;
+  p.policy = OverrunPolicy::kSkip;
+  Executive exec(p, clock, *model, &driver, {}, {&sink}, log, config.routing);
+  AllocationProbe probe;
+  exec.set_hook(&probe);
+  exec.prepare("config/rig.toml");
+  log.start();
+  exec.go();
+  EXPECT_EQ(exec.join(), StopReason::kDuration);
+  log.stop();
+  EXPECT_EQ(probe.last_cycle, 12'000u);
+  EXPECT_EQ(probe.last - probe.at_100, 0u) << "allocations on the loop thread over 11,900 cycles";
+  EXPECT_EQ(sink.count, 12'000u);  // offline: back-pressure, nothing dropped
+  EXPECT_EQ(sink.lost, 0u);
+  EXPECT_TRUE(sink.stopped);
+  EXPECT_DOUBLE_EQ(sink.last_x, exec.signals()[Signal::kPositionX]);
+}
+
+}  // namespace
+}  // namespace rig
