@@ -1,0 +1,177 @@
+#!/usr/bin/python3
+"""End-to-end tests of the `rig` executable: rig_cli_test.py RIG_BINARY SOURCE_DIR CASE.
+
+Cases: offline, realtime, sigterm, notify, badconfig, usage. No absolute timing is asserted
+(except that a 50 ms injected stall produces a gap in the watchdog pings)."""
+
+import json
+import os
+import re
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+
+RIG, SRC, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
+CONFIG = os.path.join(SRC, "config", "rig.toml")
+TMP = tempfile.mkdtemp(prefix="rig_cli_")
+SUMMARY_KEYS = ["cycles", "deadline_misses", "sim_time_s", "wall_time_s", "lateness_ns", "compute_ns",
+                "rt", "policy", "histogram", "can"]
+
+
+def fail(msg):
+    print("FAIL:", msg)
+    sys.exit(1)
+
+
+def check(cond, msg):
+    if not cond:
+        fail(msg)
+
+
+def run(args, **kw):
+    return subprocess.run([RIG] + args, capture_output=True, text=True, timeout=60, **kw)
+
+
+def read_log(path):
+    lines = open(path).read().splitlines()
+    check(lines, "overrun log is empty")
+    return [json.loads(line) for line in lines]  # every line must be valid JSON
+
+
+def check_summary(summary):
+    for key in SUMMARY_KEYS:
+        check(key in summary, f"summary lacks key {key}")
+    for key in ["p50", "p99", "p999", "max"]:
+        check(key in summary["lateness_ns"] and key in summary["compute_ns"], f"missing {key}")
+    q = summary["lateness_ns"]
+    check(q["p50"] <= q["p99"] <= q["p999"] <= q["max"], f"quantiles not ordered: {q}")
+    check(sum(b["count"] for b in summary["histogram"]["lateness_ns"]) == summary["cycles"],
+          "histogram counts != cycles")
+    check(summary["can"]["bus_state"] == "disabled", "no CAN configured, bus_state must be disabled")
+
+
+def case_offline():
+    outs = []
+    for i in range(2):
+        sj, log = f"{TMP}/s{i}.json", f"{TMP}/o{i}.jsonl"
+        r = run(["run", "--config", CONFIG, "--offline", "--duration", "2", "--summary-json", sj,
+                 "--overrun-log", log])
+        check(r.returncode == 0, f"exit {r.returncode}: {r.stderr}")
+        s = json.load(open(sj))
+        check_summary(s)
+        check(s["cycles"] == 2000, f"cycles {s['cycles']} != 2000")
+        check(s["sim_time_s"] == 2.0, f"sim_time_s {s['sim_time_s']}")
+        # Quarter car after 2 s of 1000 N m up a 10 % grade: a = (F - m g sin) / (m + I/r^2) ~ 7.2 m/s^2.
+        v = s["outputs"]["vehicle_speed_mps"]
+        check(13.5 < v < 15.0, f"speed after 2 s {v}")
+        del s["wall_time_s"]
+        events = [{k: e[k] for k in e if k not in ("time", "monotonic_ns")} for e in read_log(log)]
+        outs.append((s, events))
+    check(outs[0] == outs[1], "two offline runs differ")
+
+
+def case_realtime():
+    sj, log = f"{TMP}/s.json", f"{TMP}/o.jsonl"
+    r = run(["run", "--config", CONFIG, "--duration", "2", "--summary-json", sj, "--overrun-log", log])
+    check(r.returncode == 0, f"exit {r.returncode}: {r.stderr}")
+    s = json.load(open(sj))
+    check_summary(s)
+    check(0 < s["cycles"] <= 2000, f"cycles {s['cycles']}")
+    check(s["wall_time_s"] > 1.9, f"wall time {s['wall_time_s']}")
+    events = read_log(log)
+    names = [e["event"] for e in events]
+    check(names[0] == "start" and names[-1] == "stop", f"events {names[:3]}..{names[-2:]}")
+    check(("rt_granted" in names) or ("rt_refused" in names), "RT outcome not logged")
+    misses = [e for e in events if e["event"] == "deadline_miss"]
+    check(len(misses) == s["deadline_misses"], f"{len(misses)} miss lines vs {s['deadline_misses']}")
+    for m in misses:
+        for k in ["time", "monotonic_ns", "cycle", "sim_time_s", "lateness_ns", "phase_ns", "compute_ns",
+                  "total_ns", "consecutive_misses", "action"]:
+            check(k in m, f"miss line lacks {k}: {m}")
+    check("rig summary" in r.stderr, "no summary on stderr")
+
+
+def case_sigterm():
+    sj, log = f"{TMP}/s.json", f"{TMP}/o.jsonl"
+    p = subprocess.Popen([RIG, "run", "--config", CONFIG, "--duration", "1000", "--summary-json", sj,
+                          "--overrun-log", log], stderr=subprocess.PIPE, text=True)
+    time.sleep(1.0)
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate(timeout=20)
+    check(p.returncode == 0, f"exit {p.returncode} after SIGTERM: {err}")
+    s = json.load(open(sj))
+    check_summary(s)
+    check(s["stop_reason"] == "signal", f"stop_reason {s['stop_reason']}")
+    events = read_log(log)
+    check(events[-1]["event"] == "stop" and "reason signal" in events[-1]["detail"], f"last {events[-1]}")
+
+
+def case_notify():
+    sock_path = f"{TMP}/notify.sock"
+    sock = socket.socket(socket.AF_UNIX, socket.SOCK_DGRAM)
+    sock.bind(sock_path)
+    sock.settimeout(0.2)
+    env = dict(os.environ, NOTIFY_SOCKET=sock_path, WATCHDOG_USEC="20000")
+    env.pop("WATCHDOG_PID", None)
+    log, sj = f"{TMP}/o.jsonl", f"{TMP}/s.json"
+    p = subprocess.Popen([RIG, "run", "--config", CONFIG, "--duration", "1.5", "--overrun-log", log,
+                          "--summary-json", sj, "--inject-stall", "500:50"],
+                         env=env, stderr=subprocess.PIPE, text=True)
+    msgs = []
+    while True:
+        try:
+            data = sock.recv(4096)
+            msgs.append((time.monotonic(), data.decode()))
+        except socket.timeout:
+            if p.poll() is not None:
+                break
+    _, err = p.communicate(timeout=20)
+    check(p.returncode == 0, f"exit {p.returncode}: {err}")
+    texts = [m for _, m in msgs]
+    check(texts and texts[0] == "READY=1", f"first message {texts[:1]}")
+    check("STOPPING=1" in texts, "no STOPPING=1")
+    check(any(t.startswith("STATUS=cycles") for t in texts), "no STATUS=")
+    pings = [t for t, m in msgs if m == "WATCHDOG=1"]
+    check(len(pings) >= 10, f"only {len(pings)} watchdog pings")
+    check(texts.index("STOPPING=1") > texts.index("READY=1"), "STOPPING before READY")
+    # The stall: in the overrun log, and the pings pause (the loop cannot advance for 50 ms).
+    stall = [e for e in read_log(log) if e["event"] == "deadline_miss" and e["cycle"] == 500]
+    check(stall and stall[0]["phase_ns"]["model"] >= 50_000_000, f"stall not logged: {stall}")
+    gaps = [b - a for a, b in zip(pings, pings[1:])]
+    check(max(gaps) >= 0.040, f"largest watchdog gap {max(gaps):.4f} s < 40 ms")
+    check("watchdog ping withheld" in err, "withheld ping not reported")
+
+
+def case_badconfig():
+    cases = {
+        "unknown_key.toml": ("[rig]\nperiod_s = 0.001\nperoid = 1\n", r":3: .*unknown key 'peroid'"),
+        "period.toml": ("[rig]\nperiod_s = -1\n", r":2: .*must be > 0"),
+        "policy.toml": ("[rig]\noverrun_policy = \"never\"\n", r":2: .*unknown value 'never'"),
+        "malformed.toml": ("[rig\n", r":1:"),
+    }
+    for name, (text, pattern) in cases.items():
+        path = f"{TMP}/{name}"
+        open(path, "w").write(text)
+        for args in (["run", "--config", path, "--offline", "--duration", "1"], ["check", path]):
+            r = run(args)
+            check(r.returncode == 2, f"{name} {args[0]}: exit {r.returncode}")
+            check(re.search(re.escape(path) + pattern, r.stderr), f"{name}: stderr {r.stderr!r}")
+    r = run(["run", "--config", f"{TMP}/missing.toml"])
+    check(r.returncode == 2 and f"{TMP}/missing.toml" in r.stderr, f"missing file: {r.returncode} {r.stderr!r}")
+
+
+def case_usage():
+    check(run(["--version"]).returncode == 0, "--version")
+    check(run(["run", "--help"]).returncode == 0, "run --help")
+    check(run(["run"]).returncode == 2, "run without --config must exit 2")
+    check(run(["frobnicate"]).returncode == 2, "unknown subcommand must exit 2")
+    r = run(["check", CONFIG])
+    check(r.returncode == 0, f"check of the default config: {r.stderr}")
+
+
+{"offline": case_offline, "realtime": case_realtime, "sigterm": case_sigterm, "notify": case_notify,
+ "badconfig": case_badconfig, "usage": case_usage}[CASE]()
+print("PASS", CASE)
