@@ -99,6 +99,8 @@ RigConfig load_config(const std::filesystem::path& file) {
       src = model::SignalSource::kDriver;
     }
   }
+  if (auto t = top.optional_table("lcm")) c.lcm = io::read_lcm_settings(*t);
+  if (auto t = top.optional_table("lcm")) c.lcm = io::read_lcm_settings(*t);
   top.finish();  // unknown top-level sections
   return c;
 }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "io/lcm/lcm_settings.h"
 #include "model/examples/quarter_car/quarter_car_params.h"
 #include "model/signals.h"
 #include "rig/driver/table_driver.h"
@@ -43,6 +44,7 @@ struct RigConfig {
   std::optional<driver::TableDriverParams> driver;  ///< [driver] kind = "table"
   /// Source of each input signal ([routing]); kDriver for inputs the driver table has.
   std::array<model::SignalSource, model::kSignalCount> routing{};
+  io::LcmSettings lcm;  ///< [lcm] (optional): URL, channel prefix, rates
 };
 
 /// Loads and validates a configuration file. Throws ConfigError("file:line: ...").
