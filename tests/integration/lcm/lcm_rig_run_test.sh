@@ -17,7 +17,7 @@ for flag in --lcm-url --lcm-log --summary-json --offline --duration; do
   grep -q -- "$flag" <<<"$help" || { echo "SKIP: rig run has no $flag yet"; exit 77; }
 done
 if [[ -z "$config" ]]; then
-  config="$(ls "$here"/../../../config/maneuvers/*.toml 2>/dev/null | head -1 || true)"
+  config="$here/../../../config/rig.toml"
 fi
 [[ -f "$config" ]] || { echo "SKIP: no configuration to run"; exit 77; }
 rig_lcm_setup route
