@@ -99,7 +99,7 @@ RigConfig load_config(const std::filesystem::path& file) {
       src = model::SignalSource::kDriver;
     }
   }
-  if (auto t = top.optional_table("lcm")) c.lcm = io::read_lcm_settings(*t);
+  if (auto t = top.optional_table("can")) c.can = io::can::read_can_settings(*t);
   if (auto t = top.optional_table("lcm")) c.lcm = io::read_lcm_settings(*t);
   top.finish();  // unknown top-level sections
   return c;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "io/can/bridge/can_settings.h"
 #include "io/lcm/lcm_settings.h"
 #include "model/examples/quarter_car/quarter_car_params.h"
 #include "model/signals.h"
@@ -44,7 +45,8 @@ struct RigConfig {
   std::optional<driver::TableDriverParams> driver;  ///< [driver] kind = "table"
   /// Source of each input signal ([routing]); kDriver for inputs the driver table has.
   std::array<model::SignalSource, model::kSignalCount> routing{};
-  io::LcmSettings lcm;  ///< [lcm] (optional): URL, channel prefix, rates
+  io::LcmSettings lcm;                      ///< [lcm] (optional): URL, channel prefix, rates
+  std::optional<io::can::CanSettings> can;  ///< [can], read by io/can's read_can_settings
 };
 
 /// Loads and validates a configuration file. Throws ConfigError("file:line: ...").

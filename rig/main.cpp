@@ -19,7 +19,14 @@ int check(const std::string& file) {
     const rig::RigConfig config = rig::load_config(file);
     rig::RunOptions options;
     options.config_file = file;
-    (void)rig::make_io(config, options);
+    try {
+      (void)rig::make_io(config, options);  // loads DBC and mapping files, opens CAN
+    } catch (const rig::io::ConfigError&) {
+      throw;
+    } catch (const std::exception& e) {
+      std::cout << "note: " << e.what()
+                << " (not available on this machine; not a configuration error)\n";
+    }
     std::cout << file << ": OK\n";
     return 0;
   } catch (const rig::io::ConfigError& e) {

@@ -1,15 +1,19 @@
 #include "rig/sinks.h"
 
-#include "io/lcm/lcm_sinks.h"
-
+#include "io/can/bridge/can_settings.h"
 #include "io/lcm/lcm_sinks.h"
 
 namespace rig {
 
-std::vector<std::unique_ptr<io::CycleIo>> make_io(const RigConfig& /*config*/,
-                                                  const RunOptions& /*options*/) {
+std::vector<std::unique_ptr<io::CycleIo>> make_io(const RigConfig& config,
+                                                  const RunOptions& options) {
   std::vector<std::unique_ptr<io::CycleIo>> io;
-  // CAN (io/can/bridge make_can_io) plugs in here when [can] is parsed and --can is not "none".
+  // CAN: a [can] section and not `--can none`; `--can IFACE` overrides the interface.
+  if (config.can.has_value() && options.can != "none") {
+    io::can::CanSettings can = *config.can;
+    if (!options.can.empty()) can.interface = options.can;
+    io.push_back(io::can::make_can_io(can));
+  }
   return io;
 }
 
