@@ -1,5 +1,8 @@
 #include "rig/run.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <csignal>
 #include <cstdio>
 #include <fstream>
@@ -32,6 +35,30 @@ void install_signal_handlers() {
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
 }
+
+/// Holds /dev/cpu_dma_latency at 0 us for the run (as cyclictest does): keeps the CPUs out of
+/// deep idle states whose exit latency would show up as wake-up lateness. Released on close.
+class CpuDmaLatency {
+ public:
+  CpuDmaLatency() {
+    fd_ = ::open("/dev/cpu_dma_latency", O_WRONLY | O_CLOEXEC);
+    if (fd_ < 0) return;
+    const std::int32_t zero = 0;
+    if (::write(fd_, &zero, sizeof zero) != static_cast<ssize_t>(sizeof zero)) {
+      ::close(fd_);
+      fd_ = -1;
+    }
+  }
+  ~CpuDmaLatency() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  CpuDmaLatency(const CpuDmaLatency&) = delete;
+  CpuDmaLatency& operator=(const CpuDmaLatency&) = delete;
+  [[nodiscard]] bool held() const { return fd_ >= 0; }
+
+ private:
+  int fd_ = -1;
+};
 
 }  // namespace
 
@@ -105,7 +132,11 @@ int run(const RunOptions& options) {
              "config " + options.config_file + ", period " + std::to_string(p.period_s) +
                  " s, policy " + info.policy + (p.offline ? ", offline" : ""));
   bool rt_ok = true;
+  std::unique_ptr<CpuDmaLatency> dma_latency;
   if (!p.offline) {
+    dma_latency = std::make_unique<CpuDmaLatency>();
+    log->event(wall.realtime_ns(), wall.now_ns(), "cpu_dma_latency",
+               dma_latency->held() ? "held at 0 us" : "not available (no permission)");
     const std::string rt = std::string("SCHED_FIFO ") + (info.sched_fifo ? "granted" : "REFUSED") +
                            " (priority " + std::to_string(p.priority) + "), mlockall " +
                            (info.memory_locked ? "granted" : "REFUSED") + ", cpu " +
