@@ -56,6 +56,7 @@ VehicleModel::VehicleModel(const VehicleParams& params, double step_size_s)
   saved_y_ = Eigen::VectorXd::Zero(framework_->size());
   saved_z_ = Eigen::VectorXd::Zero(framework_->size());
   saved_shafts_ = Eigen::VectorXd::Zero(driven_count);
+  zero_rate_ = Eigen::VectorXd::Zero(framework_->size());
   reset(0, 0, 0);
 }
 
@@ -239,20 +240,55 @@ bool VehicleModel::state_finite() const noexcept {
 }
 
 StepStatus VehicleModel::step(Signals& signals) noexcept {
-  read_inputs(signals);
+  set_inputs(signals);
+  begin_step(h_);
+  finish_step(h_, zero_rate_);  // no constraint forces: exactly Engine::step
+  if (last_status_ != StepStatus::kOk) return last_status_;
+  write_outputs(signals);
+  return StepStatus::kOk;
+}
+
+void VehicleModel::set_inputs(const Signals& signals) noexcept { read_inputs(signals); }
+
+Eigen::Index VehicleModel::coordinate_size() const noexcept { return engine_->coordinate_size(); }
+
+void VehicleModel::begin_step(double h) noexcept {
   select_gear();
   update_contacts();
   save_state();
-  engine_->step(h_);
+  saved_accel_body_ = accel_body_;
+  engine_->begin_step(h);  // eq. (8) up to z^u = M_VI^-1 q of the framework (eq. 46)
+}
+
+solver::CouplableSystem::ConstVectorRef VehicleModel::coordinates() const noexcept {
+  return engine_->coordinates();
+}
+solver::CouplableSystem::ConstVectorRef VehicleModel::speeds() const noexcept {
+  return engine_->speeds();
+}
+solver::CouplableSystem::ConstMatrixRef VehicleModel::kinematics_inverse() const noexcept {
+  return engine_->kinematics_inverse();
+}
+solver::CouplableSystem::ConstVectorRef VehicleModel::unconstrained_rate() const noexcept {
+  return engine_->unconstrained_rate();
+}
+void VehicleModel::solve_mass(ConstMatrixRef b, MatrixRef x) const noexcept {
+  engine_->solve_mass(b, x);
+}
+
+void VehicleModel::finish_step(double h, ConstVectorRef extra_rate) noexcept {
+  engine_->finish_step(h, extra_rate);  // eq. (45)
   if (!state_finite()) {
     restore_state();
-    return StepStatus::kNonFinite;
+    last_status_ = StepStatus::kNonFinite;
+    return;
   }
-  time_s_ += h_;
+  last_status_ = StepStatus::kOk;
+  time_s_ += h;
   const auto& y = framework_->coordinates();
   const auto& z = framework_->speeds();
   const Vec3 w = z.segment<3>(3);
-  accel_body_ = (z.segment<3>(0) - saved_z_.segment<3>(0)) / h_ + w.cross(z.segment<3>(0));
+  accel_body_ = (z.segment<3>(0) - saved_z_.segment<3>(0)) / h + w.cross(z.segment<3>(0));
   for (int i = 0; i < bus_.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
     wheel_out_[k] = framework_->wheel_forces(y, z, i);
@@ -266,8 +302,19 @@ StepStatus VehicleModel::step(Signals& signals) noexcept {
   bus_.assist_torque_nm = steering_->assist_torque_nm(tb);
   bus_.engine_torque_nm =
       engine_torque_nm(p_.drivetrain, bus_.throttle, drivetrain_->engine_speed_radps());
-  write_outputs(signals);
-  return StepStatus::kOk;
+}
+
+void VehicleModel::revert_step() noexcept {
+  if (last_status_ != StepStatus::kOk) return;  // a failed step was already undone
+  restore_state();
+  time_s_ -= h_;
+  accel_body_ = saved_accel_body_;
+  const auto& y = framework_->coordinates();
+  const auto& z = framework_->speeds();
+  for (int i = 0; i < bus_.wheel_count; ++i) {
+    wheel_out_[static_cast<std::size_t>(i)] = framework_->wheel_forces(y, z, i);
+  }
+  last_status_ = StepStatus::kNonFinite;
 }
 
 void VehicleModel::write_outputs(Signals& s) noexcept {

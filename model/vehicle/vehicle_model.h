@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "model/solver/arrowhead_factorization.h"
+#include "model/solver/couplable_system.h"
 #include "model/solver/engine.h"
 #include "model/solver/force_element_stepper.h"
 #include "model/solver/mechanical_stepper.h"
@@ -23,7 +24,12 @@
 
 namespace rig::model::vehicle {
 
-class VehicleModel final : public SteppedModel {
+/// A SteppedModel on its own; as a solver::CouplableSystem it is one unit of a vehicle
+/// combination (model/combination): set_inputs(), then begin_step() runs the force elements,
+/// subsystems and the framework up to z^u and the factorization of M_VI (eq. 46), and
+/// finish_step() applies the constraint response dz = mu lambda (eq. 45) and completes the step.
+/// step() is exactly set_inputs + begin_step + finish_step(0) + write_outputs.
+class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
  public:
   /// Builds every block and workspace (allocates); throws std::invalid_argument on parameters
   /// the model cannot run (fewer than one axle, more than kMaxWheels wheels).
@@ -34,6 +40,28 @@ class VehicleModel final : public SteppedModel {
   [[nodiscard]] double time_s() const noexcept override { return time_s_; }
   StepStatus step(Signals& signals) noexcept override;
   void fill_report(ModelReport& report) const noexcept override;
+
+  // ---- CouplableSystem: one unit of a combination (eqs. 45-46) ----
+  /// Reads the driver/ECU inputs for the next begin_step().
+  void set_inputs(const Signals& signals) noexcept;
+  [[nodiscard]] Eigen::Index coordinate_size() const noexcept override;
+  /// Gear selection, contacts, then eq. (8) up to z^u of the framework (h must be step_size_s()).
+  void begin_step(double h) noexcept override;
+  [[nodiscard]] ConstVectorRef coordinates() const noexcept override;
+  [[nodiscard]] ConstVectorRef speeds() const noexcept override;
+  [[nodiscard]] ConstMatrixRef kinematics_inverse() const noexcept override;
+  [[nodiscard]] ConstVectorRef unconstrained_rate() const noexcept override;
+  void solve_mass(ConstMatrixRef b, MatrixRef x) const noexcept override;
+  /// z(k+1) = z(k) + h (z^u + extra_rate), y(k+1) = ... (eq. 45); then the outputs of the step
+  /// are updated. On a non-finite state the step is undone (see last_status()).
+  void finish_step(double h, ConstVectorRef extra_rate) noexcept override;
+  /// kNonFinite if the last finish_step() produced a NaN/inf (the state was restored).
+  [[nodiscard]] StepStatus last_status() const noexcept { return last_status_; }
+  /// Undoes the last completed step (state and time), e.g. when another unit of the same
+  /// combination failed in it. Only once per step.
+  void revert_step() noexcept;
+  /// Writes the output signals of the current state (step() calls it).
+  void write_outputs(Signals& s) noexcept;
 
   // ---- for tests and tools ----
   [[nodiscard]] const VehicleParams& params() const noexcept { return p_; }
@@ -52,7 +80,6 @@ class VehicleModel final : public SteppedModel {
   void read_inputs(const Signals& s) noexcept;
   void select_gear() noexcept;
   void update_contacts() noexcept;
-  void write_outputs(Signals& s) noexcept;
   void save_state() noexcept;
   void restore_state() noexcept;
   [[nodiscard]] bool state_finite() const noexcept;
@@ -86,6 +113,9 @@ class VehicleModel final : public SteppedModel {
   std::array<double, kMaxWheels> saved_spin_{};
   std::array<double, 2 * kMaxWheels> saved_deflection_{};
   Vec3 accel_body_ = Vec3::Zero();
+  Eigen::VectorXd zero_rate_;
+  StepStatus last_status_ = StepStatus::kOk;
+  Vec3 saved_accel_body_ = Vec3::Zero();
 };
 
 }  // namespace rig::model::vehicle
