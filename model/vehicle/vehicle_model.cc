@@ -47,10 +47,14 @@ VehicleModel::VehicleModel(const VehicleParams& params, double step_size_s)
     shaft_stepper_ = std::make_unique<solver::ForceElementStepper<Eigen::Dynamic>>(*shafts_);
     engine_->add_stage(*shaft_stepper_);
   }
+  // A unit without driven axles (a trailer) has no use for the drive train, one without
+  // steered axles none for the steering: their stages are left out (their states stay at rest).
+  const bool any_steered =
+      std::any_of(p_.axles.begin(), p_.axles.end(), [](const AxleParams& a) { return a.steered; });
   drivetrain_stepper_ = std::make_unique<solver::MechanicalStepper<2>>(*drivetrain_);
-  engine_->add_stage(*drivetrain_stepper_);
+  if (driven_count > 0) engine_->add_stage(*drivetrain_stepper_);
   steering_stepper_ = std::make_unique<solver::MechanicalStepper<2>>(*steering_);
-  engine_->add_stage(*steering_stepper_);
+  if (any_steered) engine_->add_stage(*steering_stepper_);
   engine_->add_stage(*wheel_stage_);
 
   saved_y_ = Eigen::VectorXd::Zero(framework_->size());
@@ -302,6 +306,13 @@ void VehicleModel::finish_step(double h, ConstVectorRef extra_rate) noexcept {
   bus_.assist_torque_nm = steering_->assist_torque_nm(tb);
   bus_.engine_torque_nm =
       engine_torque_nm(p_.drivetrain, bus_.throttle, drivetrain_->engine_speed_radps());
+}
+
+const Eigen::MatrixXd& VehicleModel::modified_mass_matrix() const noexcept {
+  return framework_stepper_->modified_mass_matrix();
+}
+const Eigen::VectorXd& VehicleModel::applied_forces() const noexcept {
+  return framework_stepper_->applied_forces();
 }
 
 void VehicleModel::revert_step() noexcept {

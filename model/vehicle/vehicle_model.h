@@ -60,6 +60,10 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   /// Undoes the last completed step (state and time), e.g. when another unit of the same
   /// combination failed in it. Only once per step.
   void revert_step() noexcept;
+  /// M_VI of the framework (eq. 8) and q at the predicted coordinates, valid after begin_step();
+  /// for the force-coupled baseline that assembles one big implicit matrix (eqs. 32-38).
+  [[nodiscard]] const Eigen::MatrixXd& modified_mass_matrix() const noexcept;
+  [[nodiscard]] const Eigen::VectorXd& applied_forces() const noexcept;
   /// Writes the output signals of the current state (step() calls it).
   void write_outputs(Signals& s) noexcept;
 
