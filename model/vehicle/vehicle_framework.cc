@@ -31,9 +31,22 @@ VehicleFramework::VehicleFramework(VehicleBus& bus, const VehicleParams& p)
     skx += 2 * a.spring_stiffness_npm * a.position_x_m;
     skxx += 2 * a.spring_stiffness_npm * a.position_x_m * a.position_x_m;
   }
-  Eigen::Matrix2d a2;
-  a2 << sk, -skx, skx, -skxx;
-  const Eigen::Vector2d heave_pitch = a2.lu().solve(Eigen::Vector2d(c.mass_kg * g, 0));
+  Eigen::Vector2d heave_pitch;
+  if (!c.supported) {
+    Eigen::Matrix2d a2;
+    a2 << sk, -skx, skx, -skxx;
+    heave_pitch =
+        a2.lu().solve(Eigen::Vector2d(c.mass_kg * g + c.payload_n, c.payload_n * c.payload_x_m));
+  } else {
+    // held at design height at x_s (heave = x_s pitch) by a support force F_s (up): unknowns
+    // heave, pitch, F_s from the force and moment balance (a 1-axle trailer is determinate)
+    Eigen::Matrix3d a3;
+    a3 << sk, -skx, 1, skx, -skxx, c.support_x_m, 1, -c.support_x_m, 0;
+    const Eigen::Vector3d x =
+        a3.lu().solve(Eigen::Vector3d(c.mass_kg * g + c.payload_n, c.payload_n * c.payload_x_m, 0));
+    heave_pitch = x.head<2>();
+    support_load_n_ = x(2);
+  }
   for (int i = 0; i < wheel_count_; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const auto& a = p.axles[k / 2];

@@ -64,6 +64,8 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   [[nodiscard]] double preload_n(int i) const noexcept {
     return preload_[static_cast<std::size_t>(i)];
   }
+  /// Static vertical force of the support (ChassisParams::supported) on this unit [N, up].
+  [[nodiscard]] double support_load_n() const noexcept { return support_load_n_; }
   /// Gravity in the road frame (grade and bank tilt it).
   [[nodiscard]] const Vec3& gravity_road() const noexcept { return gravity_road_; }
 
@@ -77,6 +79,7 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   std::array<double, kMaxWheels> preload_{};
   Mat3 inertia_;
   double total_mass_kg_ = 0;
+  double support_load_n_ = 0;
   Vec3 gravity_road_;
   Vector y_;
   Vector z_;

@@ -113,6 +113,14 @@ struct ChassisParams {
   double cg_height_m = 0.55;   ///< design position, above ground
   double drag_area_m2 = 0.65;  ///< c_d A
   double air_density_kgpm3 = 1.2;
+  /// Units of a combination (model/combination), for the spring preloads only (the design
+  /// position is the static one): a trailing unit is held at design height at its hitch
+  /// (x = support_x_m from the CG) by the unit in front; a leading unit carries the static
+  /// hitch load payload_n (down) at x = payload_x_m. Defaults: a vehicle on its own.
+  bool supported = false;
+  double support_x_m = 0;
+  double payload_n = 0;
+  double payload_x_m = 0;
 };
 
 /// Road plane (eq. of the contact): z = 0 of the road frame; grade and bank only tilt gravity.
