@@ -130,16 +130,16 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
   const io::IoCounters c = e.can_counters();
   j +=
       fmt("  \"can\": {\"bus_state\": \"%s\", \"frames_received\": %llu, \"frames_sent\": %llu, "
-          "\"timeouts\": %llu, "
+          "\"rx_overflows\": %llu, \"timeouts\": %llu, "
           "\"checksum_failures\": %llu, \"counter_failures\": %llu, \"bad_frames\": %llu, "
           "\"unknown_frames\": %llu, "
           "\"error_frames\": %llu, \"out_of_range\": %llu, \"send_no_buffer\": %llu, "
           "\"send_dropped\": %llu, "
           "\"reopens\": %llu},\n",
-          bus_state_name(c.bus_state), ull(c.frames_received), ull(c.frames_sent), ull(c.timeouts),
-          ull(c.checksum_failures), ull(c.counter_failures), ull(c.bad_frames),
-          ull(c.unknown_frames), ull(c.error_frames), ull(c.out_of_range), ull(c.send_no_buffer),
-          ull(c.send_dropped), ull(c.reopens));
+          bus_state_name(c.bus_state), ull(c.frames_received), ull(c.frames_sent),
+          ull(c.rx_overflows), ull(c.timeouts), ull(c.checksum_failures), ull(c.counter_failures),
+          ull(c.bad_frames), ull(c.unknown_frames), ull(c.error_frames), ull(c.out_of_range),
+          ull(c.send_no_buffer), ull(c.send_dropped), ull(c.reopens));
   j += "  \"outputs\": {";
   bool first = true;
   for (const auto& s : model::kSignalTable) {

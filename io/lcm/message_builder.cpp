@@ -218,6 +218,7 @@ void fill_status(const Snapshot& snapshot, const RunInfo& info, const StatusTota
   msg.can_send_no_buffer = i64(c.send_no_buffer);
   msg.can_send_dropped = i64(c.send_dropped);
   msg.can_reopens = i64(c.reopens);
+  msg.can_rx_overflows = i64(c.rx_overflows);
 
   for (std::size_t i = 0; i < n_inputs; ++i) {
     msg.input_valid[i] = snapshot.signals.valid[i] ? 1 : 0;

@@ -274,7 +274,8 @@ class StatusCsv final : public ChannelCsv {
                                "can_out_of_range",
                                "can_send_no_buffer",
                                "can_send_dropped",
-                               "can_reopens"};
+                               "can_reopens",
+                               "can_rx_overflows"};
     for (const auto& name : inputs_) h.push_back("input_valid_" + name);
     return join(h);
   }
@@ -303,7 +304,8 @@ class StatusCsv final : public ChannelCsv {
     for (std::int64_t v :
          {m_.can_frames_received, m_.can_frames_sent, m_.can_timeouts, m_.can_checksum_failures,
           m_.can_counter_failures, m_.can_bad_frames, m_.can_unknown_frames, m_.can_error_frames,
-          m_.can_out_of_range, m_.can_send_no_buffer, m_.can_send_dropped, m_.can_reopens}) {
+          m_.can_out_of_range, m_.can_send_no_buffer, m_.can_send_dropped, m_.can_reopens,
+          m_.can_rx_overflows}) {
       line.add(v);
     }
     for (std::size_t i = 0; i < inputs_.size(); ++i) {

@@ -68,6 +68,7 @@ void CanBridge::read_counters(IoCounters& counters) const noexcept {
   const TransportCounters& t = transport_.counters();
   counters.bus_state = transport_.state();
   counters.frames_received = t.frames_received;
+  counters.rx_overflows = t.rx_overflows;
   counters.frames_sent = t.frames_sent;
   counters.error_frames = t.error_frames;
   counters.bad_frames += t.malformed;
