@@ -1,6 +1,7 @@
 #include "rig/config.h"
 
 #include <algorithm>
+#include <string>
 #include <string_view>
 
 #include "io/config/config_error.h"
@@ -50,6 +51,38 @@ ModelSettings read_model(io::StrictTable& t) {
   return m;
 }
 
+/// Wheelbase and steering ratio of the configured vehicle, the path driver's defaults.
+driver::PathDriverVehicle path_driver_vehicle(const ModelSettings& m) {
+  driver::PathDriverVehicle v;
+  if (!m.vehicle) return v;
+  const auto& p = m.vehicle->params;
+  // steered axle (the first) to the mean position of the unsteered axles
+  double rear_x_m = 0;
+  int rear_count = 0;
+  for (const auto& a : p.axles) {
+    if (a.steered) continue;
+    rear_x_m += a.position_x_m;
+    ++rear_count;
+  }
+  if (!p.axles.empty() && rear_count > 0)
+    v.wheelbase_m = p.axles.front().position_x_m - rear_x_m / rear_count;
+  // road wheel steer = rack travel / steering arm, rack travel = i_SB * wheel angle
+  if (p.steering.rack_per_pinion_m_per_rad > 0)
+    v.steering_ratio = p.steering.steering_arm_m / p.steering.rack_per_pinion_m_per_rad;
+  return v;
+}
+
+/// Marks the inputs a driver writes as kDriver; an input routed to CAN stays with CAN.
+void route_path_driver(RigConfig& c) {
+  using model::Signal;
+  for (const Signal s :
+       {Signal::kSteeringWheelAngleCmd, Signal::kThrottlePedal, Signal::kBrakePressureFront,
+        Signal::kBrakePressureRear, Signal::kGearRequest}) {
+    auto& src = c.routing[model::index(s)];
+    if (src != model::SignalSource::kCan) src = model::SignalSource::kDriver;
+  }
+}
+
 void read_routing(io::StrictTable& t, RigConfig& c) {
   for (auto&& [key, node] : t.raw()) {
     const std::string name(key.str());
@@ -89,14 +122,19 @@ RigConfig load_config(const std::filesystem::path& file) {
   // Routing before the driver: a table column must not be routed to CAN.
   if (auto t = top.optional_table("routing")) read_routing(*t, c);
   if (auto t = top.optional_table("driver")) {
-    (void)t->choice("kind", "table", {"table"});
-    c.driver = driver::read_table_driver(*t);
-    for (const model::Signal s : c.driver->columns) {
-      auto& src = c.routing[model::index(s)];
-      if (src == model::SignalSource::kCan)
-        throw t->error("columns",
-                       "'" + std::string(model::info(s).name) + "' is routed to CAN in [routing]");
-      src = model::SignalSource::kDriver;
+    const std::string kind = t->choice("kind", "table", {"table", "path"});
+    if (kind == "path") {
+      c.path_driver = driver::read_path_driver(*t, path_driver_vehicle(c.model));
+      route_path_driver(c);
+    } else {
+      c.driver = driver::read_table_driver(*t);
+      for (const model::Signal s : c.driver->columns) {
+        auto& src = c.routing[model::index(s)];
+        if (src == model::SignalSource::kCan)
+          throw t->error("columns", "'" + std::string(model::info(s).name) +
+                                        "' is routed to CAN in [routing]");
+        src = model::SignalSource::kDriver;
+      }
     }
   }
   if (auto t = top.optional_table("can")) c.can = io::can::read_can_settings(*t);

@@ -13,6 +13,7 @@
 #include "io/lcm/lcm_settings.h"
 #include "model/examples/quarter_car/quarter_car_params.h"
 #include "model/signals.h"
+#include "rig/driver/path_driver.h"
 #include "rig/driver/table_driver.h"
 #include "rig/vehicle_config/vehicle_config.h"
 
@@ -42,7 +43,8 @@ struct RigConfig {
   std::filesystem::path file;
   RigSettings rig;
   ModelSettings model;
-  std::optional<driver::TableDriverParams> driver;  ///< [driver] kind = "table"
+  std::optional<driver::TableDriverParams> driver;      ///< [driver] kind = "table"
+  std::optional<driver::PathDriverParams> path_driver;  ///< [driver] kind = "path"
   /// Source of each input signal ([routing]); kDriver for inputs the driver table has.
   std::array<model::SignalSource, model::kSignalCount> routing{};
   io::LcmSettings lcm;                      ///< [lcm] (optional): URL, channel prefix, rates

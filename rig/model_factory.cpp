@@ -1,6 +1,8 @@
 #include "rig/model_factory.h"
 
 #include "model/examples/quarter_car/quarter_car_model.h"
+#include "rig/driver/path_driver.h"
+#include "rig/driver/table_driver.h"
 
 namespace rig {
 
@@ -11,6 +13,12 @@ std::unique_ptr<model::SteppedModel> make_model(const RigConfig& config) {
   // kind is validated at load time; "quarter-car" is the only one so far.
   return std::make_unique<model::examples::QuarterCarModel>(config.model.quarter_car,
                                                             config.rig.period_s);
+}
+
+std::unique_ptr<driver::Driver> make_driver(const RigConfig& config) {
+  if (config.path_driver) return std::make_unique<driver::PathDriver>(*config.path_driver);
+  if (config.driver) return std::make_unique<driver::TableDriver>(*config.driver);
+  return nullptr;
 }
 
 }  // namespace rig

@@ -74,7 +74,7 @@ int run(const RunOptions& options) {
     io_owned = make_io(config, options);
     sinks_owned = make_sinks(config, options);
     model = make_model(config);
-    if (config.driver) driver = std::make_unique<driver::TableDriver>(*config.driver);
+    driver = make_driver(config);
   } catch (const io::ConfigError& e) {
     std::cerr << e.what() << "\n";
     return 2;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
 namespace rig::driver {
@@ -23,6 +24,36 @@ std::vector<PathPoint> iso3888_1_centreline(double start_x_m, double lane_offset
   change(70, 25, lane_offset_m, 0);
   path.push_back({start_x_m + 300, 0});
   return path;
+}
+
+PathDriverParams read_path_driver(io::StrictTable& t, const PathDriverVehicle& vehicle) {
+  PathDriverParams p;
+  const std::string path = t.choice("path", "iso3888-1", {"iso3888-1", "straight"});
+  const double start_x_m = t.number_in("path_start_x_m", 30.0, -1e6, 1e6);
+  const double lane_offset_m = t.number_in("lane_offset_m", 3.5, -20.0, 20.0);
+  if (path == "iso3888-1") {
+    p.path = iso3888_1_centreline(start_x_m, lane_offset_m);
+  } else {
+    p.path = {{start_x_m - 1e6, 0.0}, {start_x_m + 1e6, 0.0}};
+  }
+  p.target_speed_mps = t.number_in("target_speed_mps", p.target_speed_mps, 0.0, 100.0);
+  p.preview_time_s = t.number_in("preview_time_s", p.preview_time_s, 0.05, 10.0);
+  p.preview_min_m = t.number_in("preview_min_m", p.preview_min_m, 0.5, 100.0);
+  p.wheelbase_m = t.number_in("wheelbase_m", vehicle.wheelbase_m, 0.5, 20.0);
+  p.steering_ratio = t.number_in("steering_ratio", vehicle.steering_ratio, 1.0, 100.0);
+  p.max_steering_wheel_rad =
+      t.number_in("max_steering_wheel_rad", p.max_steering_wheel_rad, 0.1, 50.0);
+  p.speed_gain_per_mps = t.number_in("speed_gain_per_mps", p.speed_gain_per_mps, 0.0, 10.0);
+  p.speed_integral_per_m = t.number_in("speed_integral_per_m", p.speed_integral_per_m, 0.0, 10.0);
+  p.brake_gain_pa_per_mps = t.number_in("brake_gain_pa_per_mps", p.brake_gain_pa_per_mps, 0.0, 1e8);
+  if (t.has("stop_time_s")) p.stop_time_s = t.number_in("stop_time_s", 0.0, 1e9);
+  p.stop_brake_pressure_front_pa =
+      t.number_in("stop_brake_pressure_front_pa", p.stop_brake_pressure_front_pa, 0.0, 3e7);
+  p.stop_brake_pressure_rear_pa =
+      t.number_in("stop_brake_pressure_rear_pa", p.stop_brake_pressure_rear_pa, 0.0, 3e7);
+  p.stop_brake_ramp_s = t.number_in("stop_brake_ramp_s", p.stop_brake_ramp_s, 0.0, 100.0);
+  t.finish();
+  return p;
 }
 
 PathDriver::PathDriver(PathDriverParams params) : p_(std::move(params)) {}
@@ -48,12 +79,22 @@ void PathDriver::update(double t, model::Signals& s) noexcept {
   const auto mine = [&](Signal id) { return s.source[model::index(id)] == SignalSource::kDriver; };
   // speed: PI on throttle, P on brake pressure
   const double err = p_.target_speed_mps - v;
-  integral_ = std::clamp(integral_ + err * dt, -20.0, 20.0);
-  const double thr = p_.speed_gain_per_mps * err + p_.speed_integral_per_m * integral_;
-  if (mine(Signal::kThrottlePedal)) s.set(Signal::kThrottlePedal, std::clamp(thr, 0.0, 1.0));
-  const double brake = err < -1.0 ? p_.brake_gain_pa_per_mps * (-err - 1.0) : 0.0;
-  if (mine(Signal::kBrakePressureFront)) s.set(Signal::kBrakePressureFront, brake);
-  if (mine(Signal::kBrakePressureRear)) s.set(Signal::kBrakePressureRear, 0.5 * brake);
+  double throttle = 0, brake_front = 0, brake_rear = 0;
+  if (t >= p_.stop_time_s) {  // stop phase: no throttle, circuit pressures ramped and held
+    const double ramp =
+        p_.stop_brake_ramp_s > 0 ? std::min(1.0, (t - p_.stop_time_s) / p_.stop_brake_ramp_s) : 1.0;
+    brake_front = ramp * p_.stop_brake_pressure_front_pa;
+    brake_rear = ramp * p_.stop_brake_pressure_rear_pa;
+  } else {
+    integral_ = std::clamp(integral_ + err * dt, -20.0, 20.0);
+    throttle =
+        std::clamp(p_.speed_gain_per_mps * err + p_.speed_integral_per_m * integral_, 0.0, 1.0);
+    brake_front = err < -1.0 ? p_.brake_gain_pa_per_mps * (-err - 1.0) : 0.0;
+    brake_rear = 0.5 * brake_front;
+  }
+  if (mine(Signal::kThrottlePedal)) s.set(Signal::kThrottlePedal, throttle);
+  if (mine(Signal::kBrakePressureFront)) s.set(Signal::kBrakePressureFront, brake_front);
+  if (mine(Signal::kBrakePressureRear)) s.set(Signal::kBrakePressureRear, brake_rear);
   if (mine(Signal::kGearRequest)) s.set(Signal::kGearRequest, 99);
   // steering: pure pursuit towards the path point one preview distance ahead
   const double look = std::max(p_.preview_min_m, std::abs(v) * p_.preview_time_s);

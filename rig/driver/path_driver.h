@@ -3,9 +3,15 @@
 /// A closed-loop driver: a PI speed controller (throttle / brake pressure) plus a preview
 /// (pure-pursuit) path follower on the steering wheel angle. Writes only the inputs whose
 /// source is SignalSource::kDriver. Built at load time; update() never allocates.
+///
+/// Optional stop phase (the demo's brake-and-hold): from stop_time_s on the throttle is 0 and the
+/// brake circuit pressures ramp linearly to stop_brake_pressure_{front,rear}_pa over
+/// stop_brake_ramp_s and are held there, whatever the speed (dry friction holds the car).
 
+#include <limits>
 #include <vector>
 
+#include "io/config/strict_table.h"
 #include "rig/driver/driver.h"
 
 namespace rig::driver {
@@ -26,7 +32,27 @@ struct PathDriverParams {
   double speed_gain_per_mps = 0.3;     ///< throttle per m/s of speed error
   double speed_integral_per_m = 0.05;  ///< throttle per m of integrated speed error
   double brake_gain_pa_per_mps = 1.5e6;
+  /// Stop phase: start time [s] (infinity: none), circuit pressures [Pa], ramp time [s].
+  double stop_time_s = std::numeric_limits<double>::infinity();
+  double stop_brake_pressure_front_pa = 3.0e6;
+  double stop_brake_pressure_rear_pa = 1.5e6;
+  double stop_brake_ramp_s = 0.5;
 };
+
+/// Vehicle geometry the path driver's pure pursuit needs (defaults for read_path_driver).
+struct PathDriverVehicle {
+  double wheelbase_m = 2.8;      ///< steered axle to the mean of the unsteered axles
+  double steering_ratio = 16.0;  ///< steering wheel angle / road wheel angle
+};
+
+/// Reads `[driver] kind = "path"` (the caller has read `kind`):
+///   path = "iso3888-1" | "straight", path_start_x_m, lane_offset_m (ISO 3888-1 centreline),
+///   target_speed_mps, preview_time_s, preview_min_m, wheelbase_m and steering_ratio (default:
+///   `vehicle`), max_steering_wheel_rad, speed_gain_per_mps, speed_integral_per_m,
+///   brake_gain_pa_per_mps, stop_time_s, stop_brake_pressure_front_pa,
+///   stop_brake_pressure_rear_pa, stop_brake_ramp_s.
+/// Throws ConfigError(file:line) on unknown keys or impossible values; calls finish().
+PathDriverParams read_path_driver(io::StrictTable& driver_table, const PathDriverVehicle& vehicle);
 
 /// ISO 3888-1 double lane change centreline (sections 15 / 30 / 25 / 25 / 15 m + run-out),
 /// lane offset 3.5 m, smooth (cosine) transitions; starts at x = start_x_m.

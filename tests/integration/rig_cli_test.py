@@ -64,9 +64,11 @@ def case_offline():
         check_summary(s)
         check(s["cycles"] == 2000, f"cycles {s['cycles']} != 2000")
         check(s["sim_time_s"] == 2.0, f"sim_time_s {s['sim_time_s']}")
-        # Quarter car after 2 s of 1000 N m up a 10 % grade: a = (F - m g sin) / (m + I/r^2) ~ 7.2 m/s^2.
-        v = s["outputs"]["vehicle_speed_mps"]
-        check(13.5 < v < 15.0, f"speed after 2 s {v}")
+        # The sedan demo after 2 s: the path driver holds 60 km/h up the 10 % grade on the straight
+        # before the lane change (x < 55 m).
+        v, x, y = (s["outputs"][k] for k in ("vehicle_speed_mps", "position_x_m", "position_y_m"))
+        check(15.8 < v < 17.5, f"speed after 2 s {v}")
+        check(30.0 < x < 35.0 and abs(y) < 0.01, f"position after 2 s {x}, {y}")
         del s["wall_time_s"]
         events = [{k: e[k] for k in e if k not in ("time", "monotonic_ns")} for e in read_log(log)]
         outs.append((s, events))

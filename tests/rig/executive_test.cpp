@@ -278,6 +278,9 @@ TEST(Config, BadInputGivesFileLine) {
       {"[driver]\ncolumns = [\"time_s\", \"throttle_pedal\"]\nrows = [[1, 1], [0, 1]]\n",
        "increase", 3},
       {"[model]\nkind = \"bus\"\n", "unknown value 'bus'", 2},
+      {"[driver]\nkind = \"path\"\npath = \"slalom\"\n", "unknown value 'slalom'", 3},
+      {"[driver]\nkind = \"path\"\ntarget_speed = 10\n", "unknown key 'target_speed'", 3},
+      {"[driver]\nkind = \"path\"\n\nstop_time_s = -1\n", "stop_time_s", 4},
   };
   for (const auto& c : cases) {
     const auto file = temp_path("bad.toml");
@@ -295,8 +298,9 @@ TEST(Config, BadInputGivesFileLine) {
   EXPECT_THROW((void)load_config("/nonexistent/rig.toml"), io::ConfigError);
 }
 
-TEST(Config, DefaultConfigReproducesThePaperManeuver) {
-  const RigConfig c = load_config(std::filesystem::path(RIG_SOURCE_DIR) / "config/rig.toml");
+TEST(Config, PaperQuarterCarConfigReproducesThePaperManeuver) {
+  const RigConfig c = load_config(std::filesystem::path(RIG_SOURCE_DIR) /
+                                  "config/maneuvers/paper-quarter-car.toml");
   EXPECT_DOUBLE_EQ(c.rig.period_s, 0.001);
   EXPECT_DOUBLE_EQ(c.model.quarter_car.grade, 0.10);
   ASSERT_TRUE(c.driver.has_value());
@@ -319,6 +323,38 @@ TEST(Config, DefaultConfigReproducesThePaperManeuver) {
   EXPECT_NEAR(brake(8.5), 1500.0, 1e-9);
   EXPECT_NEAR(brake(17.999), 1500.0, 1e-9);
   EXPECT_DOUBLE_EQ(brake(18.0), 0.0);
+}
+
+TEST(Config, DefaultConfigIsTheSedanDemoWithThePathDriver) {
+  const RigConfig c = load_config(std::filesystem::path(RIG_SOURCE_DIR) / "config/rig.toml");
+  EXPECT_DOUBLE_EQ(c.rig.period_s, 0.001);
+  ASSERT_EQ(c.model.kind, "vehicle");
+  ASSERT_TRUE(c.model.vehicle.has_value());
+  EXPECT_EQ(c.model.vehicle->params.axles.size(), 2u);
+  EXPECT_DOUBLE_EQ(c.model.vehicle->params.road.grade, 0.10);
+  ASSERT_TRUE(c.path_driver.has_value());
+  EXPECT_FALSE(c.driver.has_value());
+  // pure-pursuit geometry from the sedan: wheelbase 1.20 + 1.60 m, ratio 0.13 m / 0.008125 m/rad
+  EXPECT_NEAR(c.path_driver->wheelbase_m, 2.80, 1e-12);
+  EXPECT_NEAR(c.path_driver->steering_ratio, 16.0, 1e-9);
+  for (const Signal s : {Signal::kSteeringWheelAngleCmd, Signal::kThrottlePedal,
+                         Signal::kBrakePressureFront, Signal::kBrakePressureRear})
+    EXPECT_EQ(c.routing[model::index(s)], model::SignalSource::kDriver) << model::info(s).name;
+  // the stop phase: no throttle, pressures ramped over 0.5 s from 10.5 s and held
+  auto d = make_driver(c);
+  ASSERT_NE(d, nullptr);
+  model::Signals s;
+  s.source = c.routing;
+  s.set(Signal::kVehicleSpeed, 10.0);  // below the target: the speed controller pushes
+  d->update(1.0, s);
+  EXPECT_GT(s[Signal::kThrottlePedal], 0.5);
+  EXPECT_DOUBLE_EQ(s[Signal::kBrakePressureFront], 0.0);
+  d->update(10.75, s);
+  EXPECT_DOUBLE_EQ(s[Signal::kThrottlePedal], 0.0);
+  EXPECT_NEAR(s[Signal::kBrakePressureFront], 1.5e6, 1e-6);
+  EXPECT_NEAR(s[Signal::kBrakePressureRear], 0.75e6, 1e-6);
+  d->update(19.0, s);
+  EXPECT_DOUBLE_EQ(s[Signal::kBrakePressureFront], 3.0e6);
 }
 
 // ---- Zero allocation on the loop thread ----
@@ -349,8 +385,9 @@ class CountingSink final : public io::SnapshotSink {
 
 TEST(Executive, LoopThreadDoesNotAllocate) {
   const RigConfig config = load_config(std::filesystem::path(RIG_SOURCE_DIR) / "config/rig.toml");
-  auto model = make_model(config);
-  driver::TableDriver driver(*config.driver);
+  auto model = make_model(config);  // the sedan demo: vehicle model + path driver
+  auto driver = make_driver(config);
+  ASSERT_NE(driver, nullptr);
   VirtualClock clock;
   io::EventLog log("");
   CountingSink sink;
@@ -358,7 +395,7 @@ TEST(Executive, LoopThreadDoesNotAllocate) {
   p.offline = true;  // the same loop, no SCHED_FIFO needed in the test
   p.duration_s = 12.0;
   p.policy = OverrunPolicy::kSkip;
-  Executive exec(p, clock, *model, &driver, {}, {&sink}, log, config.routing);
+  Executive exec(p, clock, *model, driver.get(), {}, {&sink}, log, config.routing);
   AllocationProbe probe;
   exec.set_hook(&probe);
   exec.prepare("config/rig.toml");

@@ -1,0 +1,192 @@
+#!/usr/bin/python3
+"""Runs one maneuver file offline through `rig run` and checks physical results from the LCM log.
+
+Usage: maneuver_test.py RIG_BINARY LOG2CSV_BINARY SOURCE_DIR NAME
+NAME is a file of config/maneuvers/ without .toml, or "rig" for config/rig.toml (the demo).
+
+Each run: `rig check` passes, `rig run --offline --lcm-url none --lcm-log F` exits 0 with stop
+reason "duration" (a NaN stops the run with exit 1), every logged state is finite; then
+rig-log2csv turns the log into RIG_STATE.csv (one row per 1 ms step) and the maneuver's own
+physical checks run on it. The numbers are the ones the model tests print
+(model/vehicle/README.md), with margins that still catch a broken model.
+"""
+
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+RIG, LOG2CSV, SRC, NAME = sys.argv[1:5]
+COLUMNS = ("sim_time_s", "unit0_", "wheel0_", "steering_", "gear")
+TMP = tempfile.mkdtemp(prefix=f"rig_maneuver_{NAME}_")
+
+
+def fail(msg):
+    print("FAIL:", msg)
+    sys.exit(1)
+
+
+def check(cond, msg):
+    if not cond:
+        fail(msg)
+    print("ok:", msg)
+
+
+def config_path(name):
+    if name == "rig":
+        return os.path.join(SRC, "config", "rig.toml")
+    return os.path.join(SRC, "config", "maneuvers", name + ".toml")
+
+
+def run_offline(config):
+    r = subprocess.run([RIG, "check", config], capture_output=True, text=True, timeout=30)
+    if r.returncode != 0:
+        fail(f"rig check: exit {r.returncode}: {r.stdout}{r.stderr}")
+    log, summary = f"{TMP}/run.lcm", f"{TMP}/summary.json"
+    r = subprocess.run([RIG, "run", "--config", config, "--offline", "--can", "none", "--lcm-url",
+                        "none", "--lcm-log", log, "--summary-json", summary],
+                       capture_output=True, text=True, timeout=120)
+    if r.returncode != 0:
+        fail(f"rig run: exit {r.returncode}: {r.stderr[-2000:]}")
+    s = json.load(open(summary))
+    check(s["stop_reason"] == "duration", f"stop reason {s['stop_reason']} (no NaN stop)")
+    r = subprocess.run([LOG2CSV, log, f"{TMP}/csv"], capture_output=True, text=True, timeout=120)
+    if r.returncode != 0:
+        fail(f"rig-log2csv: {r.stderr}")
+    rows = []
+    with open(f"{TMP}/csv/RIG_STATE.csv", newline="") as f:
+        for row in csv.DictReader(f):
+            rows.append({k: float(v) for k, v in row.items() if k.startswith(COLUMNS)})
+    check(len(rows) == s["cycles"], f"{len(rows)} logged states = {s['cycles']} cycles")
+    bad = [k for k, v in rows[-1].items() if not math.isfinite(v)]
+    check(not bad and all(math.isfinite(r["unit0_x_m"]) for r in rows), f"all states finite {bad}")
+    return s, rows
+
+
+def at(rows, t):
+    """The row at simulated time t (nearest step; rows are 1 step apart)."""
+    dt = rows[1]["sim_time_s"] - rows[0]["sim_time_s"]
+    i = round((t - rows[0]["sim_time_s"]) / dt)
+    return rows[max(0, min(len(rows) - 1, i))]
+
+
+def speed(r):
+    return math.hypot(r["unit0_vx_mps"], r["unit0_vy_mps"])
+
+
+def iso3888_centreline_y(x, start_x, offset=3.5):
+    """rig/driver/path_driver.cpp iso3888_1_centreline: cosine lane changes over 15..45 m and
+    70..95 m after start_x (the driver follows it by straight segments of 1 m; 1 mm apart)."""
+    u = x - start_x
+    if 15 <= u <= 45:
+        return offset * 0.5 * (1 - math.cos(math.pi * (u - 15) / 30))
+    if 45 < u < 70:
+        return offset
+    if 70 <= u <= 95:
+        return offset * 0.5 * (1 + math.cos(math.pi * (u - 70) / 25))
+    return 0.0
+
+
+def dlc_offsets(rows, start_x):
+    """Max |CG offset from the centreline| in lane 1 (0-15 m), lane 3 (45-70 m), lane 5
+    (95-110 m) of the ISO 3888-1 track, as tests/model/vehicle DoubleLaneChangeClosedLoopAt60kmh."""
+    lanes = {1: (0, 15), 3: (45, 70), 5: (95, 110)}
+    out = {k: 0.0 for k in lanes}
+    for r in rows:
+        u = r["unit0_x_m"] - start_x
+        off = abs(r["unit0_y_m"] - iso3888_centreline_y(r["unit0_x_m"], start_x))
+        for k, (a, b) in lanes.items():
+            if a <= u <= b:
+                out[k] = max(out[k], off)
+    return out
+
+
+def check_dlc(rows, start_x, v_target):
+    off = dlc_offsets(rows, start_x)
+    print(f"DLC max |offset| lane 1/3/5: {off[1]:.3f}/{off[3]:.3f}/{off[5]:.3f} m")
+    # ISO 3888-1 lane half-widths minus half the car width (1.80 m): 0.21, 0.30, 0.39 m
+    check(off[1] < 0.21 and off[3] < 0.30 and off[5] < 0.39, "DLC stays in the lanes")
+    on_track = [r for r in rows if 0 <= r["unit0_x_m"] - start_x <= 125]
+    check(on_track and rows[-1]["unit0_x_m"] > start_x + 125, "DLC track completed")
+    v = [speed(r) for r in on_track]
+    check(min(v) > 0.95 * v_target and max(v) < 1.05 * v_target,
+          f"speed on the track {min(v) * 3.6:.1f}-{max(v) * 3.6:.1f} km/h within 5 % of "
+          f"{v_target * 3.6:.0f} km/h")
+    ay = max(abs(r["unit0_ay_mps2"]) for r in on_track)
+    check(2.0 < ay < 8.0, f"max |a_y| on the track {ay:.2f} m/s^2 (lane changes, below mu g)")
+
+
+def creep_mm(rows, t0, t1):
+    """Distance travelled between t0 and t1 [mm]."""
+    a, b = at(rows, t0), at(rows, t1)
+    return 1e3 * math.hypot(b["unit0_x_m"] - a["unit0_x_m"], b["unit0_y_m"] - a["unit0_y_m"])
+
+
+def case_rig(s, rows):
+    # DLC at 60 km/h up the 10 % grade, then brakes at 10.5 s, stand-still, hold to 20 s.
+    check_dlc([r for r in rows if r["sim_time_s"] < 10.5], 40.0, 16.67)
+    stop = next(r["sim_time_s"] for r in rows if r["sim_time_s"] > 10.5 and speed(r) < 0.01)
+    check(stop < 15.0, f"stand-still at t = {stop:.2f} s (< 15 s)")
+    creep = creep_mm(rows, 15.0, 20.0)
+    check(creep < 1.0, f"creep on the 10 % grade over 15-20 s: {creep:.3f} mm (< 1 mm)")
+    check(all(r["wheel0_brake_torque_nm"] != 0 for r in rows if r["sim_time_s"] > 15),
+          "brakes hold the car")
+
+
+def case_double_lane_change_iso3888(s, rows):
+    check_dlc(rows, 30.0, 16.67)
+
+
+def case_grade_hold_20pct(s, rows):
+    # braked from 5 m/s up 20 %: at rest within 2 s, held to 14 s, then drives away uphill
+    check(speed(at(rows, 2.0)) < 0.01, f"at rest at 2 s ({speed(at(rows, 2.0)):.4f} m/s)")
+    creep = creep_mm(rows, 3.5, 13.5)
+    check(creep < 1.0, f"creep on the 20 % grade over 10 s: {creep:.3f} mm (< 1 mm)")
+    up = at(rows, 30.0)["unit0_x_m"] - at(rows, 14.0)["unit0_x_m"]
+    check(up > 20.0, f"drives {up:.1f} m uphill in 16 s after release")
+
+
+def case_step_steer_iso7401(s, rows):
+    end = at(rows, 6.0)
+    r_end, ay_end = end["unit0_wz_radps"], end["unit0_ay_mps2"]
+    # model/vehicle/README.md: 0.187 rad/s, 4.1 m/s^2 at 80 km/h
+    check(0.16 < r_end < 0.22, f"steady yaw rate {r_end:.4f} rad/s")
+    check(3.5 < ay_end < 4.7, f"steady a_y {ay_end:.3f} m/s^2")
+    late = [r["unit0_wz_radps"] for r in rows if r["sim_time_s"] >= 4.0]
+    check(max(late) - min(late) < 0.02 * r_end, "yaw rate settled over 4-6 s (no oscillation)")
+    peak = max(r["unit0_wz_radps"] for r in rows)
+    check(peak < 1.2 * r_end, f"overshoot {100 * (peak / r_end - 1):.1f} % (< 20 %)")
+
+
+def case_circle_iso4138(s, rows):
+    ay = [abs(r["unit0_ay_mps2"]) for r in rows]
+    check(max(ay) > 7.0, f"a_y reaches {max(ay):.2f} m/s^2 (> 7, saturation near mu g)")
+    check(max(ay) < 9.81, "a_y below mu g")
+    check(speed(rows[-1]) > speed(rows[0]) + 10.0, "speed raised along the circle")
+
+
+def case_acceleration_coastdown(s, rows):
+    t100 = next((r["sim_time_s"] for r in rows if speed(r) >= 100 / 3.6), None)
+    check(t100 is not None and 4.0 < t100 < 10.0, f"0-100 km/h in {t100} s")
+    v15, v40 = speed(at(rows, 15.0)), speed(at(rows, 40.0))
+    check(v40 < v15 - 3.0 and v40 > 0.5 * v15, f"coast-down {v15:.1f} -> {v40:.1f} m/s")
+
+
+def case_paper_quarter_car(s, rows):
+    # Quarter car after 2 s of 1000 N m up a 10 % grade: a = (F - m g sin) / (m + I/r^2) ~ 7.2 m/s^2.
+    v = at(rows, 2.0)["unit0_vx_mps"]
+    check(13.5 < v < 15.0, f"speed after 2 s {v:.2f} m/s")
+    creep = creep_mm(rows, 14.0, 17.9)
+    check(creep < 1.0, f"braked creep 14-17.9 s: {creep:.3f} mm")
+    check(at(rows, 20.0)["unit0_vx_mps"] < -0.5, "released at 18 s: rolls back")
+
+
+summary, states = run_offline(config_path(NAME))
+case = globals().get("case_" + NAME.replace("-", "_"))
+if case is None:
+    fail(f"no physical check for {NAME}: add case_{NAME.replace('-', '_')} to {__file__}")
+case(summary, states)
+print("PASS", NAME)
