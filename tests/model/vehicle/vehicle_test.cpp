@@ -473,10 +473,11 @@ TEST(VehicleConfig, ManeuverFilesNameTheirVehicleAndRunAtOneMillisecond) {
   for (const auto& entry :
        std::filesystem::directory_iterator(RIG_SOURCE_DIR "/config/maneuvers")) {
     if (entry.path().extension() != ".toml") continue;
-    ++files;
     const toml::table doc = io::load_toml_file(entry.path());
     io::StrictTable top(doc, entry.path(), "top level");
     io::StrictTable model_table = top.table("model");
+    if (entry.path().filename() == "paper-quarter-car.toml") continue;  // the paper's example
+    ++files;
     EXPECT_EQ(model_table.string("kind"), "vehicle") << entry.path();
     const auto settings = vehicle_config::read_vehicle_model(model_table);
     model_table.finish();  // no unknown vehicle keys
