@@ -6,75 +6,57 @@
 namespace rig::model::vehicle {
 namespace {
 
-// sqrt(a^2 + b^2) without glibc hypot's overflow care (our magnitudes are far from it): the
-// hot path evaluates this ~30 times per step.
-inline double norm2(double a, double b) { return std::sqrt(a * a + b * b); }
-
-// TMeasy's degressive load dependence: value(F_z) from the values at F_zN and 2 F_zN.
-double degressive(double at_nominal, double at_double, double load_ratio) {
-  return load_ratio *
-         (2.0 * at_nominal - 0.5 * at_double - (at_nominal - 0.5 * at_double) * load_ratio);
+tire::TmeasyCurve to_tire(const TmeasyCurve& c) noexcept {
+  return {c.initial_slope_n, c.max_force_n, c.slip_at_max, c.sliding_force_n, c.slip_at_sliding};
 }
 
-double linear(double at_nominal, double at_double, double load_ratio) {
-  return at_nominal + (at_double - at_nominal) * (load_ratio - 1.0);
-}
-
-TmeasyCurve at_load(const TmeasyCurve& n, const TmeasyCurve& d, double ratio, double mu) {
-  TmeasyCurve c;
-  c.initial_slope_n = std::max(0.0, degressive(n.initial_slope_n, d.initial_slope_n, ratio));
-  c.max_force_n = mu * std::max(0.0, degressive(n.max_force_n, d.max_force_n, ratio));
-  c.sliding_force_n = mu * std::max(0.0, degressive(n.sliding_force_n, d.sliding_force_n, ratio));
-  c.slip_at_max = std::max(1e-3, linear(n.slip_at_max, d.slip_at_max, ratio));
-  c.slip_at_sliding =
-      std::max(c.slip_at_max + 1e-3, linear(n.slip_at_sliding, d.slip_at_sliding, ratio));
+/// The degressive load law turns negative far beyond 2 F_zN (and the slips could at F_z -> 0):
+/// keep the curve physical there (no force of the wrong sign, s_S > s_M > 0).
+tire::TmeasyCurve guarded(tire::TmeasyCurve c) noexcept {
+  c.initial_slope_n = std::max(0.0, c.initial_slope_n);
+  c.max_force_n = std::max(0.0, c.max_force_n);
+  c.slide_force_n = std::max(0.0, c.slide_force_n);
+  c.max_slip = std::max(1e-3, c.max_slip);
+  c.slide_slip = std::max(c.max_slip + 1e-3, c.slide_slip);
   return c;
 }
 
 }  // namespace
 
-TmeasyLoadCurves tmeasy_curves(const TireParams& tire, double load_n, double mu) noexcept {
+tire::TmeasyCurvePair tmeasy_longitudinal(const TireParams& t) noexcept {
+  return {to_tire(t.longitudinal_nominal), to_tire(t.longitudinal_double)};
+}
+
+tire::TmeasyCurvePair tmeasy_lateral(const TireParams& t) noexcept {
+  return {to_tire(t.lateral_nominal), to_tire(t.lateral_double)};
+}
+
+TmeasyLoadCurves tmeasy_curves(const TireParams& t, double load_n, double mu) noexcept {
   TmeasyLoadCurves c;
-  const double ratio = std::max(0.0, load_n) / tire.nominal_load_n;
-  c.x = at_load(tire.longitudinal_nominal, tire.longitudinal_double, ratio, mu);
-  c.y = at_load(tire.lateral_nominal, tire.lateral_double, ratio, mu);
-  // Normalizing factors (TMeasy): equal weight of slip-at-maximum and initial-slope ratios.
-  const double sm = c.x.slip_at_max + c.y.slip_at_max;
-  const double rx = c.x.initial_slope_n > 0 ? c.x.max_force_n / c.x.initial_slope_n : 0.0;
-  const double ry = c.y.initial_slope_n > 0 ? c.y.max_force_n / c.y.initial_slope_n : 0.0;
-  const double rs = rx + ry;
-  c.normalize_x = c.x.slip_at_max / sm + (rs > 0 ? rx / rs : 0.5);
-  c.normalize_y = c.y.slip_at_max / sm + (rs > 0 ? ry / rs : 0.5);
+  if (!(load_n > 0.0)) return c;  // lift-off: zero curves, f = 0
+  const double q = load_n / t.nominal_load_n;
+  c.x = guarded(tire::curve_at_load(tmeasy_longitudinal(t), q, mu));
+  c.y = guarded(tire::curve_at_load(tmeasy_lateral(t), q, mu));
+  if (c.x.initial_slope_n > 0.0 && c.y.initial_slope_n > 0.0) {
+    const tire::SlipNormalization n = tire::slip_normalization(c.x, c.y);  // Rill 2011, eq. 3.83
+    c.normalize_x = n.x;
+    c.normalize_y = n.y;
+  }
   return c;
 }
 
 double tmeasy_f_per_slip(const TmeasyLoadCurves& c, double slip_x, double slip_y) noexcept {
-  const double s = norm2(slip_x, slip_y);
-  double cx = 1.0;
-  double cy = 0.0;
+  // sqrt without glibc hypot's overflow care (our magnitudes are far from it)
+  const double s = std::sqrt(slip_x * slip_x + slip_y * slip_y);
+  double cos_phi = 1.0, sin_phi = 0.0;  // s = 0: phi = 0, f(0) = dFx0 s^x
   if (s > 1e-12) {
-    cx = slip_x / s;
-    cy = slip_y / s;
+    cos_phi = slip_x / s;
+    sin_phi = slip_y / s;
   }
-  const double ax = c.normalize_x * cx;
-  const double ay = c.normalize_y * cy;
-  const double df0 = norm2(c.x.initial_slope_n * ax, c.y.initial_slope_n * ay);
-  const double fm = norm2(c.x.max_force_n * cx, c.y.max_force_n * cy);
-  const double fs = norm2(c.x.sliding_force_n * cx, c.y.sliding_force_n * cy);
-  const double sm =
-      norm2(c.x.slip_at_max / c.normalize_x * cx, c.y.slip_at_max / c.normalize_y * cy);
-  const double ss =
-      norm2(c.x.slip_at_sliding / c.normalize_x * cx, c.y.slip_at_sliding / c.normalize_y * cy);
-  if (fm <= 0.0 || df0 <= 0.0) return 0.0;
-  if (s <= sm) {
-    const double sigma = s / sm;
-    return df0 / (1.0 + sigma * (sigma + df0 * sm / fm - 2.0));
-  }
-  if (s < ss) {
-    const double sigma = (s - sm) / (ss - sm);
-    return (fm - (fm - fs) * sigma * sigma * (3.0 - 2.0 * sigma)) / s;
-  }
-  return fs / s;
+  const tire::TmeasyCurve k = tire::generalized_curve(
+      c.x, c.y, tire::SlipNormalization{c.normalize_x, c.normalize_y}, cos_phi, sin_phi);
+  if (k.max_force_n <= 0.0 || k.initial_slope_n <= 0.0) return 0.0;
+  return tire::evaluate_characteristic(k, s).f_n;
 }
 
 TmeasySlip tmeasy_slip(const TmeasyLoadCurves& c, double vx_mps, double vy_mps, double spin_radps,

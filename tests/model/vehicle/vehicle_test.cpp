@@ -1,5 +1,6 @@
 // Acceptance tests of the generic vehicle (issue 6) on the sedan of config/vehicles/sedan.toml.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "model/tire/tmeasy_tire.h"
+#include "model/vehicle/tmeasy.h"
 #include "model/vehicle/vehicle_model.h"
 #include "rig/driver/path_driver.h"
 #include "rig/vehicle_config/vehicle_config.h"
@@ -43,6 +46,38 @@ void run(VehicleModel& m, Signals& s, double seconds,
     if (inputs) inputs(m.time_s(), s);
     ASSERT_EQ(m.step(s), StepStatus::kOk) << "t = " << m.time_s();
   }
+}
+
+// The vehicle's f(s) (tmeasy.h, shared per wheel and step) is model/tire's characteristic: the
+// steady-state forces of eqs. (16-17) equal TmeasyTire::steady_state for the same tire, load,
+// friction and slip velocities, in adhesion, near the maximum and in sliding.
+TEST(Vehicle, TireCharacteristicIsModelTire) {
+  const TireParams& t = sedan().axles[0].tire;
+  tire::TmeasyParams tp;
+  tp.nominal_load_n = t.nominal_load_n;
+  tp.longitudinal = tmeasy_longitudinal(t);
+  tp.lateral = tmeasy_lateral(t);
+  tp.slip_velocity_mps = t.velocity_floor_mps;
+  const tire::TmeasyTire reference(tp);
+  const double r = 0.3;
+  int compared = 0;
+  for (double load : {1500.0, 3500.0, 6000.0}) {
+    for (double mu : {1.0, 0.5}) {
+      const TmeasyLoadCurves c = tmeasy_curves(t, load, mu);
+      for (const auto& [vx, vy, w] :
+           {std::array{20.0, 0.0, 20.0 / r * 1.02}, std::array{20.0, 1.0, 20.0 / r},
+            std::array{20.0, -3.0, 50.0}, std::array{10.0, 2.0, 0.0}, std::array{0.0, 0.0, 0.0}}) {
+        const TmeasySlip v = tmeasy_slip(c, vx, vy, w, r, t.velocity_floor_mps);
+        const tire::SteadyStateForces ref = reference.steady_state({vx, vy, w, r, load, mu});
+        EXPECT_NEAR(v.f_per_slip * v.slip_x, ref.long_force_n, 1e-9 * load) << load << " " << vx;
+        EXPECT_NEAR(v.f_per_slip * v.slip_y, ref.lat_force_n, 1e-9 * load) << load << " " << vy;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 30);
+  // lift-off: no force
+  EXPECT_EQ(tmeasy_slip(tmeasy_curves(t, 0.0, 1.0), 10, 1, 0, r, 0.01).f_per_slip, 0.0);
 }
 
 TEST(Vehicle, StaticEquilibrium) {
