@@ -36,9 +36,14 @@ RigSettings read_rig(io::StrictTable& t) {
 
 ModelSettings read_model(io::StrictTable& t) {
   ModelSettings m;
-  m.kind = t.choice("kind", "quarter-car", {"quarter-car", "vehicle"});
+  m.kind = t.choice("kind", "quarter-car", {"quarter-car", "vehicle", "combination"});
   if (m.kind == "vehicle") {  // vehicle file + road keys (rig/vehicle_config)
     m.vehicle = vehicle_config::read_vehicle_model(t);
+    t.finish();
+    return m;
+  }
+  if (m.kind == "combination") {  // units, joints, road keys (rig/vehicle_config)
+    m.combination = vehicle_config::read_combination_model(t);
     t.finish();
     return m;
   }
@@ -54,8 +59,9 @@ ModelSettings read_model(io::StrictTable& t) {
 /// Wheelbase and steering ratio of the configured vehicle, the path driver's defaults.
 driver::PathDriverVehicle path_driver_vehicle(const ModelSettings& m) {
   driver::PathDriverVehicle v;
-  if (!m.vehicle) return v;
-  const auto& p = m.vehicle->params;
+  if (!m.vehicle && !m.combination) return v;
+  // a combination is steered by its leading unit
+  const auto& p = m.vehicle ? m.vehicle->params : m.combination->units.front();
   // steered axle (the first) to the mean position of the unsteered axles
   double rear_x_m = 0;
   int rear_count = 0;

@@ -37,6 +37,7 @@ struct ModelSettings {
   std::string kind = "quarter-car";
   model::examples::QuarterCarParams quarter_car{};
   std::optional<vehicle_config::VehicleModelSettings> vehicle;  ///< kind = "vehicle"
+  std::optional<vehicle_config::CombinationModelSettings> combination;  ///< kind = "combination"
 };
 
 struct RigConfig {

@@ -10,7 +10,10 @@ std::unique_ptr<model::SteppedModel> make_model(const RigConfig& config) {
   if (config.model.kind == "vehicle") {
     return vehicle_config::make_vehicle_model(*config.model.vehicle, config.rig.period_s);
   }
-  // kind is validated at load time; "quarter-car" is the only one so far.
+  if (config.model.kind == "combination") {
+    return vehicle_config::make_combination_model(*config.model.combination, config.rig.period_s);
+  }
+  // kind is validated at load time; the rest is "quarter-car".
   return std::make_unique<model::examples::QuarterCarModel>(config.model.quarter_car,
                                                             config.rig.period_s);
 }

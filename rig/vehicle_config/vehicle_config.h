@@ -6,8 +6,11 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "io/config/strict_table.h"
+#include "model/combination/joint.h"
 #include "model/report.h"
 #include "model/stepped_model.h"
 #include "model/vehicle/vehicle_params.h"
@@ -36,5 +39,25 @@ VehicleModelSettings read_vehicle_model(io::StrictTable& model_table);
 /// or at the initial speed.
 std::unique_ptr<model::SteppedModel> make_vehicle_model(const VehicleModelSettings& settings,
                                                         double step_s);
+
+/// The keys of [model] kind = "combination" (config/combinations/*.toml): the units front to
+/// rear as [[model.unit]] tables (vehicle = "../vehicles/x.toml"), the joints between them as
+/// [[model.joint]] tables (kind = "ball" | "fifth-wheel", leading_x_m, trailing_x_m, height_m;
+/// optional stiffness_npm, damping_nspm for the force-coupled baseline), `parallel`, the road
+/// keys (applied to every unit) and initial_speed_mps.
+struct CombinationModelSettings {
+  std::string name;
+  std::vector<model::vehicle::VehicleParams> units;
+  std::vector<model::combination::JointParams> joints;
+  bool parallel = false;
+  double initial_speed_mps = 0;
+};
+
+/// Reads the combination keys from [model] (the caller has read `kind`).
+CombinationModelSettings read_combination_model(io::StrictTable& model_table);
+
+/// The model for the factory (library rig_vehicle_factory): a model::combination::Combination.
+std::unique_ptr<model::SteppedModel> make_combination_model(
+    const CombinationModelSettings& settings, double step_s);
 
 }  // namespace rig::vehicle_config

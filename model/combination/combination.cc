@@ -1,0 +1,261 @@
+#include "model/combination/combination.h"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace rig::model::combination {
+
+using vehicle::VehicleModel;
+using vehicle::VehicleParams;
+
+solver::NewtonParams default_combination_newton_params() noexcept {
+  solver::NewtonParams p;
+  p.criterion = solver::NewtonCriterion::kPositionAndMultiplier;
+  p.position_tolerance = 1e-7;
+  p.multiplier_rel_tolerance = 1e-3;
+  p.multiplier_abs_tolerance = 1.0;
+  p.max_iterations = 10;
+  return p;
+}
+
+JointParams make_joint_params(JointKind kind, const VehicleParams& leading, double leading_x_m,
+                              const VehicleParams& trailing, double trailing_x_m, double height_m) {
+  JointParams j;
+  j.kind = kind;
+  j.leading_point_m = Vec3(leading_x_m, 0, height_m - leading.chassis.cg_height_m);
+  j.trailing_point_m = Vec3(trailing_x_m, 0, height_m - trailing.chassis.cg_height_m);
+  return j;
+}
+
+std::vector<std::unique_ptr<VehicleModel>> build_units(const CombinationParams& params,
+                                                       double step_size_s) {
+  const std::size_t n = params.units.size();
+  if (n < 2) throw std::invalid_argument("combination: needs at least two units");
+  if (params.joints.size() != n - 1)
+    throw std::invalid_argument("combination: needs one joint between each pair of units");
+  std::vector<std::unique_ptr<VehicleModel>> units(n);
+  double hitch_load_n = 0;  // static vertical load of unit i+1 on unit i (down on i)
+  for (std::size_t k = n; k-- > 0;) {
+    VehicleParams p = params.units[k];
+    if (k + 1 < n) {  // carries the next unit's static hitch load
+      p.chassis.payload_n = hitch_load_n;
+      p.chassis.payload_x_m = params.joints[k].leading_point_m.x();
+    }
+    if (k > 0) {  // held at its hitch by the unit in front
+      p.chassis.supported = true;
+      p.chassis.support_x_m = params.joints[k - 1].trailing_point_m.x();
+    }
+    units[k] = std::make_unique<VehicleModel>(p, step_size_s);
+    hitch_load_n = units[k]->framework().support_load_n();
+  }
+  return units;
+}
+
+void place_units(std::vector<std::unique_ptr<VehicleModel>>& units,
+                 const std::vector<JointParams>& joints, double x_m, double y_m, double yaw_rad) {
+  const Vec3 ex(std::cos(yaw_rad), std::sin(yaw_rad), 0);
+  double x = x_m, y = y_m;
+  units[0]->reset(x, y, yaw_rad);
+  for (std::size_t k = 0; k + 1 < units.size(); ++k) {
+    // in line: the hitch point of unit k and of unit k+1 coincide in the road plane
+    const double dx = joints[k].leading_point_m.x() - joints[k].trailing_point_m.x();
+    x += dx * ex.x();
+    y += dx * ex.y();
+    units[k + 1]->reset(x, y, yaw_rad);
+  }
+}
+
+/// Runs begin_step of units 1..N-1 on one worker thread while the caller runs unit 0 (the
+/// option of issue 7). Hand-over by atomics: the worker spins briefly, then sleeps in
+/// std::atomic::wait (futex); nothing allocates after construction.
+class ParallelBegin {
+ public:
+  explicit ParallelBegin(std::vector<VehicleModel*> units)
+      : units_(std::move(units)), worker_([this] { run(); }) {}
+  ~ParallelBegin() {
+    stop_.store(true, std::memory_order_relaxed);
+    epoch_.fetch_add(1, std::memory_order_release);
+    epoch_.notify_one();
+    worker_.join();
+  }
+  ParallelBegin(const ParallelBegin&) = delete;
+  ParallelBegin& operator=(const ParallelBegin&) = delete;
+
+  void start(double h) noexcept {
+    h_ = h;
+    const unsigned e = epoch_.fetch_add(1, std::memory_order_release) + 1;
+    target_ = e;
+    epoch_.notify_one();
+  }
+  void wait() noexcept {
+    for (int spin = 0; done_.load(std::memory_order_acquire) != target_; ++spin) {
+      if (spin > 20000) done_.wait(done_.load(std::memory_order_acquire));
+    }
+  }
+
+ private:
+  void run() noexcept {
+    unsigned seen = 0;
+    for (;;) {
+      unsigned e = epoch_.load(std::memory_order_acquire);
+      for (int spin = 0; e == seen; ++spin) {
+        if (spin > 20000) epoch_.wait(seen, std::memory_order_acquire);
+        e = epoch_.load(std::memory_order_acquire);
+      }
+      seen = e;
+      if (stop_.load(std::memory_order_relaxed)) return;
+      for (VehicleModel* u : units_) u->begin_step(h_);
+      done_.store(e, std::memory_order_release);
+      done_.notify_one();
+    }
+  }
+
+  std::vector<VehicleModel*> units_;
+  double h_ = 0;
+  unsigned target_ = 0;
+  std::atomic<unsigned> epoch_{0}, done_{0};
+  std::atomic<bool> stop_{false};
+  std::thread worker_;
+};
+
+namespace {
+
+/// A unit as seen by the CoupledStepper: forwards to the VehicleModel; with a ParallelBegin,
+/// unit 0's begin_step starts the worker on the others and theirs wait for it (the stepper
+/// calls begin_step in unit order, so the worker overlaps with unit 0).
+class UnitSlot final : public solver::CouplableSystem {
+ public:
+  UnitSlot(VehicleModel& unit, ParallelBegin* parallel, bool first)
+      : unit_(unit), parallel_(parallel), first_(first) {}
+  [[nodiscard]] Eigen::Index coordinate_size() const noexcept override {
+    return unit_.coordinate_size();
+  }
+  void begin_step(double h) noexcept override {
+    if (parallel_ == nullptr) {
+      unit_.begin_step(h);
+    } else if (first_) {
+      parallel_->start(h);
+      unit_.begin_step(h);
+    } else {
+      parallel_->wait();
+    }
+  }
+  [[nodiscard]] ConstVectorRef coordinates() const noexcept override { return unit_.coordinates(); }
+  [[nodiscard]] ConstVectorRef speeds() const noexcept override { return unit_.speeds(); }
+  [[nodiscard]] ConstMatrixRef kinematics_inverse() const noexcept override {
+    return unit_.kinematics_inverse();
+  }
+  [[nodiscard]] ConstVectorRef unconstrained_rate() const noexcept override {
+    return unit_.unconstrained_rate();
+  }
+  void solve_mass(ConstMatrixRef b, MatrixRef x) const noexcept override { unit_.solve_mass(b, x); }
+  void finish_step(double h, ConstVectorRef extra_rate) noexcept override {
+    unit_.finish_step(h, extra_rate);
+  }
+
+ private:
+  VehicleModel& unit_;
+  ParallelBegin* parallel_;
+  bool first_;
+};
+
+double wrap_angle(double a) noexcept {
+  a = std::remainder(a, 2 * std::numbers::pi);
+  return a;
+}
+
+}  // namespace
+
+Combination::Combination(const CombinationParams& params, double step_size_s)
+    : p_(params), h_(step_size_s), units_(build_units(params, step_size_s)) {
+  std::vector<Eigen::Index> sizes;
+  for (const auto& u : units_) sizes.push_back(u->coordinate_size());
+  constraint_ = std::make_unique<ChainConstraint>(p_.joints, sizes);
+  if (p_.parallel) {
+    std::vector<VehicleModel*> others;
+    for (std::size_t k = 1; k < units_.size(); ++k) others.push_back(units_[k].get());
+    parallel_ = std::make_unique<ParallelBegin>(std::move(others));
+  }
+  std::vector<solver::CouplableSystem*> systems;
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    slots_.push_back(std::make_unique<UnitSlot>(*units_[k], parallel_.get(), k == 0));
+    systems.push_back(slots_.back().get());
+  }
+  stepper_ = std::make_unique<solver::CoupledStepper>(std::move(systems), *constraint_, p_.newton);
+  saved_lambda_ = Eigen::VectorXd::Zero(constraint_->size());
+  // warm start of the very first step: the static hitch loads (down on the leading unit)
+  static_lambda_ = Eigen::VectorXd::Zero(constraint_->size());
+  for (int i = 0; i < constraint_->joint_count(); ++i) {
+    static_lambda_(constraint_->row(i) + 2) =
+        -units_[static_cast<std::size_t>(i) + 1]->framework().support_load_n();
+  }
+  reset(0, 0, 0);
+}
+
+Combination::~Combination() = default;
+
+void Combination::reset(double x_m, double y_m, double yaw_rad) noexcept {
+  place_units(units_, p_.joints, x_m, y_m, yaw_rad);
+  stepper_->set_multipliers(static_lambda_);
+  time_s_ = 0;
+}
+
+void Combination::set_forward_speed(double speed_mps) noexcept {
+  for (auto& u : units_) u->set_forward_speed(speed_mps);
+}
+
+StepStatus Combination::step(Signals& signals) noexcept {
+  for (auto& u : units_) u->set_inputs(signals);
+  saved_lambda_ = stepper_->multipliers();
+  stepper_->step(h_);  // eqs. (45-50)
+  bool ok = stepper_->multipliers().allFinite();
+  for (const auto& u : units_) ok = ok && u->last_status() == StepStatus::kOk;
+  if (!ok) {
+    for (auto& u : units_) u->revert_step();  // all units back to t (no-op where undone)
+    stepper_->set_multipliers(saved_lambda_);
+    return StepStatus::kNonFinite;
+  }
+  time_s_ += h_;
+  units_[0]->write_outputs(signals);
+  return StepStatus::kOk;
+}
+
+Vec3 Combination::joint_force_n(int i) const noexcept {
+  return Joint::force_on_leading_n(stepper_->multipliers().segment(constraint_->row(i), 3));
+}
+
+double Combination::joint_violation_m(int i) const noexcept {
+  JointEvaluation e;
+  const Joint& j = constraint_->joint(i);
+  const auto k = static_cast<std::size_t>(i);
+  j.evaluate(units_[k]->coordinates().head<6>(), units_[k + 1]->coordinates().head<6>(), e);
+  return e.g.head(j.size()).lpNorm<Eigen::Infinity>();
+}
+
+double Combination::articulation_rad(int i) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  return wrap_angle(units_[k]->coordinates()(3) - units_[k + 1]->coordinates()(3));
+}
+
+void Combination::fill_report(ModelReport& report) const noexcept {
+  units_[0]->fill_report(report);
+  const int n = std::min(unit_count(), kMaxUnits);
+  ModelReport unit_report;  // on the stack, no allocation
+  for (int k = 1; k < n; ++k) {
+    units_[static_cast<std::size_t>(k)]->fill_report(unit_report);
+    report.units[static_cast<std::size_t>(k)] = unit_report.units[0];
+  }
+  report.unit_count = n;
+  report.time_s = time_s_;
+  report.joint_count = std::min(constraint_->joint_count(), kMaxJoints);
+  for (int i = 0; i < report.joint_count; ++i) {
+    JointReport& j = report.joints[static_cast<std::size_t>(i)];
+    const Vec3 f = joint_force_n(i);
+    j.force_n = {f.x(), f.y(), f.z()};
+    j.violation_m = joint_violation_m(i);
+    j.newton_iterations = stepper_->last_report().iterations;
+  }
+}
+
+}  // namespace rig::model::combination

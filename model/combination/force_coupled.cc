@@ -1,0 +1,141 @@
+#include "model/combination/force_coupled.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace rig::model::combination {
+
+ForceCoupledCombination::ForceCoupledCombination(const CombinationParams& params,
+                                                 double step_size_s)
+    : p_(params), h_(step_size_s), units_(build_units(params, step_size_s)) {
+  std::vector<Eigen::Index> sizes;
+  for (const auto& u : units_) {
+    sizes.push_back(u->coordinate_size());
+    n_ += u->coordinate_size();
+  }
+  constraint_ = std::make_unique<ChainConstraint>(p_.joints, sizes);
+  m_ = constraint_->size();
+  stiffness_ = Eigen::VectorXd::Zero(m_);
+  damping_ = Eigen::VectorXd::Zero(m_);
+  for (int i = 0; i < constraint_->joint_count(); ++i) {
+    const JointParams& j = constraint_->joint(i).params();
+    const Eigen::Index r = constraint_->row(i);
+    stiffness_.segment<3>(r).setConstant(j.stiffness_npm);
+    damping_.segment<3>(r).setConstant(j.damping_nspm);
+    if (j.kind == JointKind::kFifthWheel) {
+      stiffness_(r + 3) = j.roll_stiffness_nmpr;
+      damping_(r + 3) = j.roll_damping_nmspr;
+    }
+  }
+  for (Eigen::VectorXd* v : {&y_, &z_, &y_pred_, &q_, &dz_, &extra_})
+    *v = Eigen::VectorXd::Zero(n_);
+  for (Eigen::VectorXd* v : {&g_, &g_pred_, &force_, &work_m_}) *v = Eigen::VectorXd::Zero(m_);
+  k_inv_ = Eigen::MatrixXd::Zero(n_, n_);
+  m_big_ = Eigen::MatrixXd::Zero(n_, n_);
+  dg_dy_ = Eigen::MatrixXd::Zero(m_, n_);
+  dg_pred_ = Eigen::MatrixXd::Zero(m_, n_);
+  jac_ = Eigen::MatrixXd::Zero(m_, n_);
+  jw_ = Eigen::MatrixXd::Zero(m_, n_);
+  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n_);
+  reset(0, 0, 0);
+}
+
+void ForceCoupledCombination::reset(double x_m, double y_m, double yaw_rad) noexcept {
+  place_units(units_, p_.joints, x_m, y_m, yaw_rad);
+  force_.setZero();
+  for (int i = 0; i < constraint_->joint_count(); ++i) {
+    force_(constraint_->row(i) + 2) =
+        -units_[static_cast<std::size_t>(i) + 1]->framework().support_load_n();
+  }
+  time_s_ = 0;
+}
+
+void ForceCoupledCombination::set_forward_speed(double speed_mps) noexcept {
+  for (auto& u : units_) u->set_forward_speed(speed_mps);
+}
+
+StepStatus ForceCoupledCombination::step(Signals& signals) noexcept {
+  const double h = h_;
+  m_big_.setZero();
+  k_inv_.setZero();
+  for (std::size_t j = 0; j < units_.size(); ++j) {
+    vehicle::VehicleModel& u = *units_[j];
+    u.set_inputs(signals);
+    u.begin_step(h);  // eq. (8) up to M_VI and q of each unit
+    const Eigen::Index o = constraint_->offset(static_cast<int>(j));
+    const Eigen::Index n = u.coordinate_size();
+    y_.segment(o, n) = u.coordinates();
+    z_.segment(o, n) = u.speeds();
+    k_inv_.block(o, o, n, n) = u.kinematics_inverse();
+    m_big_.block(o, o, n, n) = u.modified_mass_matrix();
+    q_.segment(o, n) = u.applied_forces();
+  }
+  // J = dg/dY K^-1 at y(k); g at the predicted coordinates (eq. 6)
+  constraint_->evaluate(y_, g_, dg_dy_);
+  jac_.noalias() = dg_dy_ * k_inv_;
+  y_pred_ = y_;
+  y_pred_.noalias() += h * k_inv_ * z_;
+  constraint_->evaluate(y_pred_, g_pred_, dg_pred_);
+  // eqs. (32-38): F = -(C g + D J z); M_big = blockdiag(M_VI) + J^T (h D + h^2 C) J
+  work_m_.noalias() = jac_ * z_;
+  force_ = -(stiffness_.cwiseProduct(g_pred_) + damping_.cwiseProduct(work_m_));
+  jw_ = (h * damping_ + (h * h) * stiffness_).asDiagonal() * jac_;
+  m_big_.noalias() += jac_.transpose() * jw_;
+  q_.noalias() += jac_.transpose() * force_;
+  lu_.compute(m_big_);
+  dz_ = lu_.solve(q_);
+  // the implicit spring force at t + h (linearized): F - (h D + h^2 C) J dz
+  force_.noalias() -= jw_ * dz_;
+  bool ok = dz_.allFinite();
+  for (std::size_t j = 0; j < units_.size(); ++j) {
+    vehicle::VehicleModel& u = *units_[j];
+    const Eigen::Index o = constraint_->offset(static_cast<int>(j));
+    const Eigen::Index n = u.coordinate_size();
+    extra_.segment(o, n) = dz_.segment(o, n) - u.unconstrained_rate();
+    u.finish_step(h, extra_.segment(o, n));  // z(k+1) = z(k) + h dz
+    ok = ok && u.last_status() == StepStatus::kOk;
+  }
+  if (!ok) {
+    for (auto& u : units_) u->revert_step();
+    return StepStatus::kNonFinite;
+  }
+  time_s_ += h;
+  units_[0]->write_outputs(signals);
+  return StepStatus::kOk;
+}
+
+double ForceCoupledCombination::joint_violation_m(int i) const noexcept {
+  JointEvaluation e;
+  const Joint& j = constraint_->joint(i);
+  const auto k = static_cast<std::size_t>(i);
+  j.evaluate(units_[k]->coordinates().head<6>(), units_[k + 1]->coordinates().head<6>(), e);
+  return e.g.head(j.size()).lpNorm<Eigen::Infinity>();
+}
+
+double ForceCoupledCombination::articulation_rad(int i) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  return std::remainder(units_[k]->coordinates()(3) - units_[k + 1]->coordinates()(3),
+                        2 * std::numbers::pi);
+}
+
+void ForceCoupledCombination::fill_report(ModelReport& report) const noexcept {
+  units_[0]->fill_report(report);
+  const int n = std::min(static_cast<int>(units_.size()), kMaxUnits);
+  ModelReport unit_report;
+  for (int k = 1; k < n; ++k) {
+    units_[static_cast<std::size_t>(k)]->fill_report(unit_report);
+    report.units[static_cast<std::size_t>(k)] = unit_report.units[0];
+  }
+  report.unit_count = n;
+  report.time_s = time_s_;
+  report.joint_count = std::min(constraint_->joint_count(), kMaxJoints);
+  for (int i = 0; i < report.joint_count; ++i) {
+    JointReport& j = report.joints[static_cast<std::size_t>(i)];
+    const Vec3 f = joint_force_n(i);
+    j.force_n = {f.x(), f.y(), f.z()};
+    j.violation_m = joint_violation_m(i);
+    j.newton_iterations = 0;
+  }
+}
+
+}  // namespace rig::model::combination

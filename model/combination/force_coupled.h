@@ -1,0 +1,56 @@
+#pragma once
+/// @file
+/// The force-coupling baseline (eqs. 32-38): the same joints as stiff spring-dampers
+///   F = -(C g + D g'),  g' = J z,  J = dg/dY K^-1    (force on the leading unit, road frame),
+/// integrated by the modified implicit Euler with ONE implicit matrix for the whole combination:
+///   [blockdiag(M_VI_j) + J^T (h D + h^2 C) J] dz = q + J^T F(Y_pred, Z(k)),
+///   z(k+1) = z(k) + h dz,  y(k+1) = y(k) + h K^-1 z(k+1).
+/// The spring's Jacobian couples the units, so a dense LU of the stacked size is needed every
+/// step (the units' own M_VI are still assembled by their begin_step; their arrowhead
+/// factorizations are then unused). For comparing speed and accuracy with the DAE approach.
+
+#include <memory>
+#include <vector>
+
+#include <Eigen/LU>
+
+#include "model/combination/combination.h"
+
+namespace rig::model::combination {
+
+class ForceCoupledCombination final : public SteppedModel {
+ public:
+  ForceCoupledCombination(const CombinationParams& params, double step_size_s);
+
+  [[nodiscard]] double step_size_s() const noexcept override { return h_; }
+  [[nodiscard]] double time_s() const noexcept override { return time_s_; }
+  StepStatus step(Signals& signals) noexcept override;
+  void fill_report(ModelReport& report) const noexcept override;
+
+  void reset(double x_m, double y_m, double yaw_rad) noexcept;
+  void set_forward_speed(double speed_mps) noexcept;
+  [[nodiscard]] vehicle::VehicleModel& unit(int i) noexcept {
+    return *units_[static_cast<std::size_t>(i)];
+  }
+  /// Spring-damper force of joint i on its leading unit at the end of the last step [N].
+  [[nodiscard]] Vec3 joint_force_n(int i) const noexcept {
+    return force_.segment<3>(constraint_->row(i));
+  }
+  /// |g|_inf of joint i at the current coordinates (the spring's deflection) [m].
+  [[nodiscard]] double joint_violation_m(int i) const noexcept;
+  [[nodiscard]] double articulation_rad(int i) const noexcept;
+
+ private:
+  CombinationParams p_;
+  double h_;
+  double time_s_ = 0;
+  std::vector<std::unique_ptr<vehicle::VehicleModel>> units_;
+  std::unique_ptr<ChainConstraint> constraint_;
+  Eigen::Index n_ = 0, m_ = 0;
+  Eigen::VectorXd stiffness_, damping_;  // C, D (diagonal, per constraint row)
+  Eigen::VectorXd y_, z_, y_pred_, g_, g_pred_, q_, dz_, force_, work_m_, extra_;
+  Eigen::MatrixXd k_inv_, dg_dy_, dg_pred_, jac_, m_big_, jw_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+};
+
+}  // namespace rig::model::combination
