@@ -29,7 +29,8 @@ ForceCoupledCombination::ForceCoupledCombination(const CombinationParams& params
   }
   for (Eigen::VectorXd* v : {&y_, &z_, &y_pred_, &q_, &dz_, &extra_})
     *v = Eigen::VectorXd::Zero(n_);
-  for (Eigen::VectorXd* v : {&g_, &g_pred_, &force_, &work_m_}) *v = Eigen::VectorXd::Zero(m_);
+  for (Eigen::VectorXd* v : {&g_, &g_pred_, &force_, &work_m_, &preload_})
+    *v = Eigen::VectorXd::Zero(m_);
   k_inv_ = Eigen::MatrixXd::Zero(n_, n_);
   m_big_ = Eigen::MatrixXd::Zero(n_, n_);
   dg_dy_ = Eigen::MatrixXd::Zero(m_, n_);
@@ -42,11 +43,12 @@ ForceCoupledCombination::ForceCoupledCombination(const CombinationParams& params
 
 void ForceCoupledCombination::reset(double x_m, double y_m, double yaw_rad) noexcept {
   place_units(units_, p_.joints, x_m, y_m, yaw_rad);
-  force_.setZero();
+  preload_.setZero();
   for (int i = 0; i < constraint_->joint_count(); ++i) {
-    force_(constraint_->row(i) + 2) =
+    preload_(constraint_->row(i) + 2) =
         -units_[static_cast<std::size_t>(i) + 1]->framework().support_load_n();
   }
+  force_ = preload_;
   time_s_ = 0;
 }
 
@@ -76,9 +78,9 @@ StepStatus ForceCoupledCombination::step(Signals& signals) noexcept {
   y_pred_ = y_;
   y_pred_.noalias() += h * k_inv_ * z_;
   constraint_->evaluate(y_pred_, g_pred_, dg_pred_);
-  // eqs. (32-38): F = -(C g + D J z); M_big = blockdiag(M_VI) + J^T (h D + h^2 C) J
+  // eqs. (32-38): F = F_0 - (C g + D J z); M_big = blockdiag(M_VI) + J^T (h D + h^2 C) J
   work_m_.noalias() = jac_ * z_;
-  force_ = -(stiffness_.cwiseProduct(g_pred_) + damping_.cwiseProduct(work_m_));
+  force_ = preload_ - (stiffness_.cwiseProduct(g_pred_) + damping_.cwiseProduct(work_m_));
   jw_ = (h * damping_ + (h * h) * stiffness_).asDiagonal() * jac_;
   m_big_.noalias() += jac_.transpose() * jw_;
   q_.noalias() += jac_.transpose() * force_;

@@ -1,7 +1,9 @@
 #pragma once
 /// @file
 /// The force-coupling baseline (eqs. 32-38): the same joints as stiff spring-dampers
-///   F = -(C g + D g'),  g' = J z,  J = dg/dY K^-1    (force on the leading unit, road frame),
+///   F = F_0 - (C g + D g'),  g' = J z,  J = dg/dY K^-1  (force on the leading unit, road frame),
+/// F_0 the static hitch load (the spring is preloaded, so that the combination starts in
+/// equilibrium as the DAE does instead of ringing at the spring's frequency),
 /// integrated by the modified implicit Euler with ONE implicit matrix for the whole combination:
 ///   [blockdiag(M_VI_j) + J^T (h D + h^2 C) J] dz = q + J^T F(Y_pred, Z(k)),
 ///   z(k+1) = z(k) + h dz,  y(k+1) = y(k) + h K^-1 z(k+1).
@@ -48,6 +50,7 @@ class ForceCoupledCombination final : public SteppedModel {
   std::unique_ptr<ChainConstraint> constraint_;
   Eigen::Index n_ = 0, m_ = 0;
   Eigen::VectorXd stiffness_, damping_;  // C, D (diagonal, per constraint row)
+  Eigen::VectorXd preload_;              // F_0
   Eigen::VectorXd y_, z_, y_pred_, g_, g_pred_, q_, dz_, force_, work_m_, extra_;
   Eigen::MatrixXd k_inv_, dg_dy_, dg_pred_, jac_, m_big_, jw_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
