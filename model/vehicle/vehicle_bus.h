@@ -23,11 +23,22 @@ struct WheelBus {
   TmeasyLoadCurves curves{};
   double f_per_slip = 0;  ///< f(s) of eq. (16) at the start of the step (used by eq. 24)
   // subsystems
-  double spin_radps = 0;         ///< wheel spin state (owned by WheelSpinStage)
-  double steer_rad = 0;          ///< from the rack through the compliant tie rod
-  double tie_rod_force_n = 0;    ///< resisting rack force from this wheel's aligning torque
-  double shaft_torque_nm = 0;    ///< half-shaft torque on the wheel
-  double brake_capacity_nm = 0;  ///< from the wheel brake pressure
+  double spin_radps = 0;       ///< wheel spin state (owned by WheelSpinStage)
+  double steer_rad = 0;        ///< gamma of eq. (29): toe + steer from the rack (tie rod)
+  double tie_rod_force_n = 0;  ///< resisting rack force from this wheel's aligning torque
+  // suspension kinematics of eq. (29) at the start of the step (SuspensionKinematics::update)
+  double hub_travel_m = 0;         ///< z(k), where the pose was evaluated
+  double hub_x_m = 0;              ///< wheel-centre offset from the design position, body x
+  double hub_y_m = 0;              ///< body y
+  double hub_dx_ds = 0;            ///< dx/dz: the centre moves along (dx/dz, dy/dz, 1)
+  double hub_dy_ds = 0;            ///< dy/dz
+  double camber_rad = 0;           ///< alpha (rotation about body x)
+  double steer_kinematic_rad = 0;  ///< gamma(z(k), u(k))
+  double steer_d_du = 0;           ///< dgamma/du at (z(k), u(k))
+  double steer_at_rack_m = 0;      ///< u(k), where gamma was evaluated
+  double rack_at_wheel_m = 0;      ///< rack travel at the wheel after the tie-rod compliance
+  double shaft_torque_nm = 0;      ///< half-shaft torque on the wheel
+  double brake_capacity_nm = 0;    ///< from the wheel brake pressure
   double brake_pressure_pa = 0;
   double brake_torque_nm = 0;  ///< applied brake torque (signed, on the wheel)
   // tire forces of the last framework step (for reports and the aligning torque)

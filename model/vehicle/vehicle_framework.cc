@@ -64,6 +64,18 @@ VehicleFramework::VehicleFramework(VehicleBus& bus, const VehicleParams& p)
   y_(2) = c.cg_height_m;
 }
 
+Vec3 VehicleFramework::wheel_centre(int i, double s) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  const WheelBus& w = bus_.wheels[k];
+  const double ds = s - w.hub_travel_m;
+  return mount_[k] + Vec3(w.hub_x_m + w.hub_dx_ds * ds, w.hub_y_m + w.hub_dy_ds * ds, s);
+}
+
+Vec3 VehicleFramework::hub_axis(int i) const noexcept {
+  const WheelBus& w = bus_.wheels[static_cast<std::size_t>(i)];
+  return {w.hub_dx_ds, w.hub_dy_ds, 1.0};
+}
+
 void VehicleFramework::kinematics_inverse(const Vector& y, Matrix& k_inv) const noexcept {
   k_inv.setIdentity(n_, n_);
   k_inv.block<3, 3>(0, 0) = body_to_road(y(3), y(4), y(5));
@@ -74,24 +86,24 @@ void VehicleFramework::mass_matrix(const Vector& y, Matrix& m) const noexcept {
   m.setZero(n_, n_);
   m.block<3, 3>(0, 0).diagonal().setConstant(p_.chassis.mass_kg);
   m.block<3, 3>(3, 3) = inertia_;
-  const Vec3 ez(0, 0, 1);
   for (int i = 0; i < wheel_count_; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const double mw = p_.axles[k / 2].unsprung_mass_kg;
-    const Vec3 r = mount_[k] + Vec3(0, 0, y(6 + i));
+    const Vec3 r = wheel_centre(i, y(6 + i));
+    const Vec3 es = hub_axis(i);
     const Mat3 rx = skew(r);
     const Eigen::Index h = 6 + i;
-    // J_v = [I, -[r]x, e_z]: M += m J_v^T J_v
+    // J_v = [I, -[r]x, e_s]: M += m J_v^T J_v
     m.block<3, 3>(0, 0).diagonal().array() += mw;
     m.block<3, 3>(0, 3) -= mw * rx;
     m.block<3, 3>(3, 0) += mw * rx;  // (-[r]x)^T = [r]x
     m.block<3, 3>(3, 3) += mw * rx.transpose() * rx;
-    m.block<3, 1>(0, h) += mw * ez;
-    m.block<1, 3>(h, 0) += mw * ez.transpose();
-    const Vec3 rxe = r.cross(ez);
+    m.block<3, 1>(0, h) += mw * es;
+    m.block<1, 3>(h, 0) += mw * es.transpose();
+    const Vec3 rxe = r.cross(es);
     m.block<3, 1>(3, h) += mw * rxe;
     m.block<1, 3>(h, 3) += mw * rxe.transpose();
-    m(h, h) += mw;
+    m(h, h) += mw * es.squaredNorm();
   }
 }
 
@@ -106,8 +118,10 @@ WheelForces VehicleFramework::wheel_forces(const Vector& y, const Vector& z, int
 WheelContact VehicleFramework::contact(const Mat3& rot, const Vector& y, const Vector& z,
                                        int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  return wheel_contact(rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3), mount_[k], y(6 + i),
-                       z(6 + i), bus_.wheels[k].steer_rad, p_.axles[k / 2].tire.radius_unloaded_m);
+  const WheelBus& w = bus_.wheels[k];
+  return wheel_contact(rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3),
+                       wheel_centre(i, y(6 + i)), hub_axis(i) * z(6 + i), w.steer_rad, w.camber_rad,
+                       p_.axles[k / 2].tire.radius_unloaded_m);
 }
 
 WheelForces VehicleFramework::wheel_forces(const Mat3& rot, const Vector& y, const Vector& z,
@@ -175,8 +189,9 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
     const auto k = static_cast<std::size_t>(i);
     const double mw = p_.axles[k / 2].unsprung_mass_kg;
     const double sd = z(6 + i);
-    const Vec3 r = mount_[k] + Vec3(0, 0, y(6 + i));
-    const Vec3 a0 = w.cross(v) + w.cross(w.cross(r)) + 2.0 * w.cross(Vec3(0, 0, sd));
+    const Vec3 r = wheel_centre(i, y(6 + i));
+    const Vec3 es = hub_axis(i);
+    const Vec3 a0 = w.cross(v) + w.cross(w.cross(r)) + 2.0 * w.cross(es * sd);
     const Vec3 fw = mw * (g - a0);
     const WheelForces wf = wheel_forces(rot, y, z, i);
     const WheelContact& c = wf.contact;
@@ -188,7 +203,7 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
     const Vec3 m_contact = (c.lever_m - r).cross(f - fw);
     tr += r.cross(f) + m_contact - m_contact.dot(c.spin_axis) * c.spin_axis -
           (bus_.wheels[k].shaft_torque_nm + bus_.wheels[k].brake_torque_nm) * c.spin_axis;
-    q(6 + i) = f.z() - wf.suspension_n;
+    q(6 + i) = es.dot(f) - wf.suspension_n;  // J_v hub column e_s
   }
   q.segment<3>(0) = ft;
   q.segment<3>(3) = tr;
@@ -215,7 +230,8 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
     // tire: force rows at the wheel centre (J_C^T u), velocity rows at the contact (u^T J_P)
     const WheelContact c = contact(rot, y, z, i);
     if (c.penetration_m <= 0) continue;
-    const Vec3 centre = mount_[k] + Vec3(0, 0, y(h));
+    const Vec3 centre = wheel_centre(i, y(h));
+    const Vec3 es = hub_axis(i);
     const WheelBus& w = bus_.wheels[k];
     const double r = dynamic_radius_m(t.radius_unloaded_m, c.penetration_m);
     const TmeasySlip slip =
@@ -236,8 +252,8 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
     for (int d = 0; d < 3; ++d) {
       const Vec3& u = *dirs[d];
       Eigen::Matrix<double, 7, 1> a, b;
-      a << u, centre.cross(u), u.z();
-      b << u, c.lever_m.cross(u), u.z();
+      a << u, centre.cross(u), es.dot(u);
+      b << u, c.lever_m.cross(u), es.dot(u);
       for (int jj = 0; jj < 7; ++jj) {
         for (int ii = 0; ii < 7; ++ii) dq_dz(cols[ii], cols[jj]) -= damp[d] * a(ii) * b(jj);
       }

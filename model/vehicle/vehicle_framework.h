@@ -3,10 +3,11 @@
 /// The framework (eq. 1): chassis (6 DOF) + one hub-travel DOF per wheel.
 ///   y_V = [x, y, z, yaw, pitch, roll, s_1..s_n],  z_V = [v_body, omega_body, s_1'..s_n'].
 /// Mass matrix and generalized forces by Jourdain's principle (method.md sec. 6): the chassis
-/// plus each unsprung mass at its wheel centre with J_v = [I, -[r]x, e_z]. Suspension forces act
-/// on the hub coordinates only; tire forces at the contact points with J_P. K_V = diag(K_BB, I)
-/// with K_BB inverted analytically. Speeds are ordered body first, then axle by axle, so that
-/// M_VI has the zero blocks of eqs. (30-31) (ArrowheadFactorization).
+/// plus each unsprung mass at its wheel centre with J_v = [I, -[r]x, e_s], e_s = d r/d s the
+/// tangent of the kinematic tables of eq. (29) (e_z when the hub moves along body z). Suspension
+/// forces act on the hub coordinates only; tire forces at the contact points with J_P. K_V =
+/// diag(K_BB, I) with K_BB inverted analytically. Speeds are ordered body first, then axle by axle,
+/// so that M_VI has the zero blocks of eqs. (30-31) (ArrowheadFactorization).
 
 #include <array>
 
@@ -68,6 +69,11 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   [[nodiscard]] double support_load_n() const noexcept { return support_load_n_; }
   /// Gravity in the road frame (grade and bank tilt it).
   [[nodiscard]] const Vec3& gravity_road() const noexcept { return gravity_road_; }
+  /// Centre of wheel i at hub travel s (body axes, from the CG): the design position plus the
+  /// offsets of eq. (29), linear in s about the step's pose (VehicleBus, SuspensionKinematics).
+  [[nodiscard]] Vec3 wheel_centre(int i, double hub_travel_m) const noexcept;
+  /// d(wheel centre)/ds = (dx/dz, dy/dz, 1): the hub-travel column of J_v and J_P.
+  [[nodiscard]] Vec3 hub_axis(int i) const noexcept;
 
  private:
   VehicleBus& bus_;

@@ -20,6 +20,7 @@ VehicleModel::VehicleModel(const VehicleParams& params, double step_size_s)
     if (p_.axles[static_cast<std::size_t>(i / 2)].driven)
       driven[static_cast<std::size_t>(driven_count++)] = i;
   }
+  kinematics_ = std::make_unique<SuspensionKinematics>(p_);
   framework_ = std::make_unique<VehicleFramework>(bus_, p_);
   if (driven_count > 0)
     shafts_ = std::make_unique<HalfShafts>(bus_, p_.drivetrain, driven, driven_count);
@@ -185,6 +186,7 @@ void VehicleModel::select_gear() noexcept {
 void VehicleModel::update_contacts() noexcept {
   const auto& y = framework_->coordinates();
   const auto& z = framework_->speeds();
+  kinematics_->update(y, bus_);  // eq. (29) at y_V(k), before any contact is evaluated
   for (int i = 0; i < bus_.wheel_count; ++i) {
     auto& w = bus_.wheels[static_cast<std::size_t>(i)];
     const TireParams& t = p_.axles[static_cast<std::size_t>(i / 2)].tire;

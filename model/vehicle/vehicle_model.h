@@ -18,6 +18,7 @@
 #include "model/vehicle/drivetrain.h"
 #include "model/vehicle/half_shafts.h"
 #include "model/vehicle/steering.h"
+#include "model/vehicle/suspension_kinematics.h"
 #include "model/vehicle/tire_deflection.h"
 #include "model/vehicle/vehicle_framework.h"
 #include "model/vehicle/wheel_spin.h"
@@ -97,6 +98,7 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   std::array<int, kMaxWheels> axle_of_wheel_{};
   std::array<WheelForces, kMaxWheels> wheel_out_{};
 
+  std::unique_ptr<SuspensionKinematics> kinematics_;  ///< eq. (29), evaluated in update_contacts
   std::unique_ptr<VehicleFramework> framework_;
   std::unique_ptr<HalfShafts> shafts_;
   std::unique_ptr<Drivetrain> drivetrain_;

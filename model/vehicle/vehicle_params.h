@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "model/kinematics/kinematic_table.h"
+
 namespace rig::model::vehicle {
 
 /// TMeasy characteristic of one direction at one wheel load (tmeasy.de; Rill 2011, ch. 3).
@@ -38,7 +40,29 @@ struct TireParams {
   double velocity_floor_mps = 0.01;           ///< v_N of eqs. (14-15)
 };
 
-/// One axle: two wheels at +-track/2, independent vertical hub travel.
+/// Suspension kinematics of eq. (29) of an axle's LEFT wheel: wheel-centre x, y (offsets from the
+/// design position, body axes), alpha (rotation about x: camber), beta (about y) and gamma
+/// (about z: toe + steer) as functions of hub travel z and rack travel u at the wheel (after the
+/// tie-rod compliance). The right wheel is the mirror image: x_R(z, u) = x_L(z, -u),
+/// y_R = -y_L(z, -u), alpha_R = -alpha_L(z, -u), beta_R = beta_L(z, -u), gamma_R = -gamma_L(z, -u).
+/// Given as five tables on one grid (u grid symmetric about 0, or a single u line), or generated
+/// from the simple geometry below (model/kinematics generate_wheel_kinematics; on a steered axle
+/// the steer is asin(u / steering arm)). All zero: the hub moves along body z, no camber or toe.
+struct AxleKinematicsParams {
+  double x_per_travel = 0;             ///< dx/dz: wheel recession with travel [-]
+  double track_per_travel = 0;         ///< dy/dz: half-track change, outwards + [-]
+  double track_per_travel2_per_m = 0;  ///< d2y/dz2 / 2: swing-arm arc [1/m]
+  double camber_rad = 0;               ///< static alpha of the left wheel
+  double camber_per_travel_radpm = 0;  ///< dalpha/dz [rad/m]
+  double toe_rad = 0;                  ///< static gamma of the left wheel (+: front to the left)
+  double bump_steer_radpm = 0;         ///< dgamma/dz [rad/m]
+  /// Given tables of the left wheel, z-major (values[k * u_count + l]); empty: generated.
+  kinematics::Grid2D grid{};
+  std::vector<double> x_m, y_m, alpha_rad, beta_rad, gamma_rad;
+  bool bicubic = true;  ///< Catmull-Rom bicubic (C1) or bilinear interpolation
+};
+
+/// One axle: two wheels at +-track/2, hub travel guided by the kinematics of eq. (29).
 struct AxleParams {
   double position_x_m = 0;  ///< wheel centre x relative to the sprung-mass CG (forward +)
   double track_m = 1.55;
@@ -55,6 +79,7 @@ struct AxleParams {
   int brake_circuit = 0;               ///< 0 = front circuit, 1 = rear circuit
   double brake_gain_nm_per_pa = 1e-4;  ///< brake torque capacity per wheel per pressure
   TireParams tire{};
+  AxleKinematicsParams kinematics{};
 };
 
 /// Enhanced rack-and-pinion steering (sec. 2.2).

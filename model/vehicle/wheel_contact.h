@@ -2,7 +2,7 @@
 /// @file
 /// Contact kinematics of one wheel on the road plane z = 0 (road frame), as a function of the
 /// framework state: contact point, tire axes, contact point velocity, tire penetration.
-/// The hub moves along the body z axis (hub travel s, up +); the wheel steers about body z.
+/// The wheel centre and its orientation come from the kinematics of eq. (29) (the framework).
 
 #include "model/vehicle/chassis_kinematics.h"
 
@@ -18,20 +18,24 @@ struct WheelContact {
   double penetration_rate_mps = 0;
 };
 
-/// @param mount_m wheel centre at zero hub travel, relative to the CG (body axes)
+/// @param centre_m wheel centre relative to the CG (body axes); @param hub_velocity_mps its
+/// velocity relative to the body from hub travel (the kinematics' tangent times the travel rate);
+/// @param steer_rad, camber_rad gamma and alpha of eq. (29): the spin axis is
+/// Rz(gamma) Rx(alpha) e_y. The contact point is the point of the road below the centre.
 inline WheelContact wheel_contact(const Mat3& r_body_to_road, const Vec3& cg_road_m,
-                                  const Vec3& v_body, const Vec3& w_body, const Vec3& mount_m,
-                                  double hub_travel_m, double hub_rate_mps, double steer_rad,
+                                  const Vec3& v_body, const Vec3& w_body, const Vec3& centre_m,
+                                  const Vec3& hub_velocity_mps, double steer_rad, double camber_rad,
                                   double radius_unloaded_m) noexcept {
   WheelContact c;
-  const Vec3 centre = mount_m + Vec3(0, 0, hub_travel_m);
-  const double height = cg_road_m.z() + r_body_to_road.row(2).dot(centre);
+  const double height = cg_road_m.z() + r_body_to_road.row(2).dot(centre_m);
   c.normal = r_body_to_road.row(2).transpose();
-  c.lever_m = centre - height * c.normal;
-  c.spin_axis = Vec3(-std::sin(steer_rad), std::cos(steer_rad), 0);
+  c.lever_m = centre_m - height * c.normal;
+  const double cos_camber = std::cos(camber_rad);
+  c.spin_axis = Vec3(-std::sin(steer_rad) * cos_camber, std::cos(steer_rad) * cos_camber,
+                     std::sin(camber_rad));
   c.ex = c.spin_axis.cross(c.normal).normalized();
   c.ey = c.normal.cross(c.ex);
-  const Vec3 vp = v_body + w_body.cross(c.lever_m) + Vec3(0, 0, hub_rate_mps);
+  const Vec3 vp = v_body + w_body.cross(c.lever_m) + hub_velocity_mps;
   c.vx_mps = c.ex.dot(vp);
   c.vy_mps = c.ey.dot(vp);
   c.penetration_m = radius_unloaded_m - height;

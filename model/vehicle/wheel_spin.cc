@@ -23,7 +23,8 @@ WheelSpinStage::WheelSpinStage(VehicleBus& bus, const VehicleParams& p,
 }
 
 void WheelSpinStage::advance(double h) noexcept {
-  // Tie-rod linkage (quasi-static compliance) from the new rack travel.
+  // Tie-rod linkage (quasi-static compliance) from the new rack travel; the wheel's steer is
+  // gamma(z, u) of the kinematic tables (SuspensionKinematics, eq. 29).
   const double rack = steering_.coordinates()(1);
   const SteeringParams& sp = p_.steering;
   double rack_force = 0;
@@ -31,8 +32,11 @@ void WheelSpinStage::advance(double h) noexcept {
     WheelBus& w = bus_.wheels[static_cast<std::size_t>(i)];
     if (!p_.axles[static_cast<std::size_t>(axle_of_wheel_[static_cast<std::size_t>(i)])].steered)
       continue;
-    w.tie_rod_force_n = w.force_y_n * sp.trail_m / sp.steering_arm_m;
-    w.steer_rad = (rack - w.tie_rod_force_n / sp.tie_rod_stiffness_npm) / sp.steering_arm_m;
+    // the aligning torque F_y n loads the rack by virtual work: F_rack = M dgamma/du
+    w.tie_rod_force_n = w.force_y_n * sp.trail_m * w.steer_d_du;
+    w.rack_at_wheel_m = rack - w.tie_rod_force_n / sp.tie_rod_stiffness_npm;
+    // gamma of eq. (29) at the new rack travel, linear in u about the step's pose
+    w.steer_rad = w.steer_kinematic_rad + w.steer_d_du * (w.rack_at_wheel_m - w.steer_at_rack_m);
     rack_force += w.tie_rod_force_n;
   }
   bus_.rack_force_n = rack_force;
@@ -49,9 +53,9 @@ void WheelSpinStage::advance(double h) noexcept {
     const double xe = bus_.deflection_m[2 * k];
     const double f_per_slip = w.f_per_slip;  // eq. (16) at the start of the step
     const double rolling = r * std::abs(w.spin_radps);
-    const double rate = deflection_rate(
-        xe, w.vx_mps - r * w.spin_radps, rolling, w.curves.normalize_x, f_per_slip,
-        tire.longitudinal_stiffness_npm, tire.longitudinal_damping_nspm);
+    const double rate =
+        deflection_rate(xe, w.vx_mps - r * w.spin_radps, rolling, w.curves.normalize_x, f_per_slip,
+                        tire.longitudinal_stiffness_npm, tire.longitudinal_damping_nspm);
     const double fx = tire.longitudinal_stiffness_npm * xe + tire.longitudinal_damping_nspm * rate;
     // d F_x / d w through the damping path (eq. 24, at fixed f)
     const double denom =

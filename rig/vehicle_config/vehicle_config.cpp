@@ -2,6 +2,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace rig::vehicle_config {
 namespace {
@@ -48,6 +49,46 @@ TireParams read_tire(io::StrictTable t) {
   return p;
 }
 
+/// [axle.kinematics]: eq. (29) of the axle's left wheel, as the simple geometry or as five
+/// tables on one grid (model::vehicle::AxleKinematicsParams).
+model::vehicle::AxleKinematicsParams read_kinematics(io::StrictTable t) {
+  model::vehicle::AxleKinematicsParams k;
+  k.x_per_travel = t.number_in("x_per_travel", 0, -2, 2);
+  k.track_per_travel = t.number_in("track_per_travel", 0, -2, 2);
+  k.track_per_travel2_per_m = t.number_in("track_per_travel2_per_m", 0, -50, 50);
+  k.camber_rad = t.number_in("camber_rad", 0, -0.3, 0.3);
+  k.camber_per_travel_radpm = t.number_in("camber_per_travel_radpm", 0, -20, 20);
+  k.toe_rad = t.number_in("toe_rad", 0, -0.1, 0.1);
+  k.bump_steer_radpm = t.number_in("bump_steer_radpm", 0, -5, 5);
+  k.bicubic = t.choice("interpolation", "bicubic", {"bicubic", "bilinear"}) == "bicubic";
+  if (auto g = t.optional_table("grid")) {
+    k.grid.z_min = g->number_in("z_min_m", -1, 1);
+    k.grid.z_step = g->number_in("z_step_m", 1e-4, 1);
+    k.grid.z_count = static_cast<int>(g->number_in("z_count", 2, 1000));
+    k.grid.u_count = static_cast<int>(g->number_in("u_count", 1, 1, 1000));
+    if (k.grid.u_count > 1) {
+      k.grid.u_step = g->number_in("u_step_m", 1e-5, 1);
+      k.grid.u_min = -0.5 * k.grid.u_step * (k.grid.u_count - 1);  // symmetric about u = 0
+    }
+    g->finish();
+    const auto n = static_cast<std::size_t>(k.grid.z_count * k.grid.u_count);
+    const auto table = [&](const char* key) {
+      std::vector<double> v = t.numbers(key);
+      if (v.size() != n)
+        throw t.error(key, std::string(key) + ": need z_count x u_count = " + std::to_string(n) +
+                               " values (z-major)");
+      return v;
+    };
+    k.x_m = table("x_m");
+    k.y_m = table("y_m");
+    k.alpha_rad = table("alpha_rad");
+    k.beta_rad = table("beta_rad");
+    k.gamma_rad = table("gamma_rad");
+  }
+  t.finish();
+  return k;
+}
+
 AxleParams read_axle(io::StrictTable t, const std::map<std::string, TireParams>& tires) {
   AxleParams a;
   a.position_x_m = t.number_in("position_x_m", -20, 20);
@@ -68,6 +109,7 @@ AxleParams read_axle(io::StrictTable t, const std::map<std::string, TireParams>&
   const auto it = tires.find(tire);
   if (it == tires.end()) throw t.error("tire", "no [tires." + tire + "] table");
   a.tire = it->second;
+  if (auto k = t.optional_table("kinematics")) a.kinematics = read_kinematics(*k);
   t.finish();
   return a;
 }
@@ -212,8 +254,8 @@ CombinationModelSettings read_combination_model(io::StrictTable& m) {
     u.finish();
   }
   if (c.units.size() < 2 || c.units.size() > static_cast<std::size_t>(model::kMaxUnits)) {
-    throw m.error("unit", "needs 2 to " + std::to_string(model::kMaxUnits) +
-                              " [[model.unit]] tables");
+    throw m.error("unit",
+                  "needs 2 to " + std::to_string(model::kMaxUnits) + " [[model.unit]] tables");
   }
   auto joints = m.tables("joint");
   if (joints.size() != c.units.size() - 1)

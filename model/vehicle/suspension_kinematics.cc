@@ -1,0 +1,155 @@
+#include "model/vehicle/suspension_kinematics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace rig::model::vehicle {
+namespace {
+
+using kinematics::Grid2D;
+using kinematics::KinematicTable;
+using kinematics::WheelKinematics;
+
+/// Node values of a table of the mirror wheel: f_R(z_k, u_l) = sign f_L(z_k, -u_l); on a grid
+/// symmetric about u = 0, -u_l is the node u_(n-1-l).
+std::vector<double> mirrored(const Grid2D& g, const std::vector<double>& left, double sign) {
+  std::vector<double> right(left.size());
+  for (int k = 0; k < g.z_count; ++k) {
+    for (int l = 0; l < g.u_count; ++l) {
+      right[static_cast<std::size_t>(k * g.u_count + l)] =
+          sign * left[static_cast<std::size_t>(k * g.u_count + (g.u_count - 1 - l))];
+    }
+  }
+  return right;
+}
+
+/// Left and right wheel of one axle from the left wheel's five tables.
+std::pair<WheelKinematics, WheelKinematics> axle_pair(
+    const Grid2D& g, std::vector<double> x, std::vector<double> y, std::vector<double> alpha,
+    std::vector<double> beta, std::vector<double> gamma, kinematics::Interpolation method) {
+  const auto n = static_cast<std::size_t>(g.z_count) * static_cast<std::size_t>(g.u_count);
+  if (g.z_count < 1 || g.u_count < 1 || x.size() != n || y.size() != n || alpha.size() != n ||
+      beta.size() != n || gamma.size() != n)
+    throw std::invalid_argument("each of the five tables needs z_count x u_count values");
+  WheelKinematics right(
+      KinematicTable(g, mirrored(g, x, 1.0)), KinematicTable(g, mirrored(g, y, -1.0)),
+      KinematicTable(g, mirrored(g, alpha, -1.0)), KinematicTable(g, mirrored(g, beta, 1.0)),
+      KinematicTable(g, mirrored(g, gamma, -1.0)), method);
+  WheelKinematics left(KinematicTable(g, std::move(x)), KinematicTable(g, std::move(y)),
+                       KinematicTable(g, std::move(alpha)), KinematicTable(g, std::move(beta)),
+                       KinematicTable(g, std::move(gamma)), method);
+  return {std::move(left), std::move(right)};
+}
+
+}  // namespace
+
+kinematics::SuspensionGeometry left_wheel_geometry(const AxleParams& a, const SteeringParams& s) {
+  const AxleKinematicsParams& k = a.kinematics;
+  kinematics::SuspensionGeometry g;
+  g.x0_m = 0;  // offsets from the design position (the framework's mount point)
+  g.y0_m = 0;
+  g.x_per_z = k.x_per_travel;
+  g.track_per_z = k.track_per_travel;
+  g.track_per_z2 = k.track_per_travel2_per_m;
+  g.camber0_rad = k.camber_rad;
+  g.camber_per_z = k.camber_per_travel_radpm;
+  g.beta_per_z = 0;
+  g.toe0_rad = k.toe_rad;
+  g.bump_steer_per_z = k.bump_steer_radpm;
+  g.steering_arm_m = a.steered ? s.steering_arm_m : 0.0;
+  g.steer_y_per_u = 0;
+  return g;
+}
+
+kinematics::Grid2D generated_grid(const AxleParams& a, const SteeringParams& s) {
+  Grid2D g;
+  g.z_step = 0.01;
+  g.z_min = -std::ceil((a.rebound_stop_travel_m + 0.02) / g.z_step) * g.z_step;
+  const double z_max = std::ceil((a.bump_stop_travel_m + 0.02) / g.z_step) * g.z_step;
+  g.z_count = static_cast<int>(std::lround((z_max - g.z_min) / g.z_step)) + 1;
+  if (a.steered && s.steering_arm_m > 0) {
+    g.u_count = 21;
+    g.u_min = -0.9 * s.steering_arm_m;
+    g.u_step = -2.0 * g.u_min / (g.u_count - 1);
+  }
+  return g;
+}
+
+SuspensionKinematics::SuspensionKinematics(const VehicleParams& p) {
+  for (std::size_t i = 0; i < p.axles.size(); ++i) {
+    const AxleParams& a = p.axles[i];
+    const AxleKinematicsParams& k = a.kinematics;
+    const auto method =
+        k.bicubic ? kinematics::Interpolation::kBicubic : kinematics::Interpolation::kBilinear;
+    const std::string axle = "vehicle: axle " + std::to_string(i + 1) + " kinematics: ";
+    std::pair<WheelKinematics, WheelKinematics> wheels;
+    const auto all_zero = [](const std::vector<double>& v) {
+      return std::all_of(v.begin(), v.end(), [](double x) { return x == 0.0; });
+    };
+    bool identity = false;
+    if (k.x_m.empty() && k.y_m.empty() && k.alpha_rad.empty() && k.beta_rad.empty() &&
+        k.gamma_rad.empty()) {
+      // the right wheel's geometry is the mirror image (see AxleKinematicsParams); the steer
+      // from the rack, asin(u / arm), keeps its sign
+      const Grid2D g = generated_grid(a, p.steering);
+      const kinematics::SuspensionGeometry left = left_wheel_geometry(a, p.steering);
+      kinematics::SuspensionGeometry right = left;
+      right.track_per_z = -left.track_per_z;
+      right.track_per_z2 = -left.track_per_z2;
+      right.camber0_rad = -left.camber0_rad;
+      right.camber_per_z = -left.camber_per_z;
+      right.toe0_rad = -left.toe0_rad;
+      right.bump_steer_per_z = -left.bump_steer_per_z;
+      wheels = {kinematics::generate_wheel_kinematics(left, g, method),
+                kinematics::generate_wheel_kinematics(right, g, method)};
+      identity = g.u_count == 1 && left.x_per_z == 0 && left.track_per_z == 0 &&
+                 left.track_per_z2 == 0 && left.camber0_rad == 0 && left.camber_per_z == 0 &&
+                 left.toe0_rad == 0 && left.bump_steer_per_z == 0;
+    } else {
+      const Grid2D& g = k.grid;
+      if (g.u_count > 1 && std::abs(g.u_min + 0.5 * g.u_step * (g.u_count - 1)) > 1e-9)
+        throw std::invalid_argument(axle + "the rack-travel grid must be symmetric about 0");
+      try {
+        wheels = axle_pair(g, k.x_m, k.y_m, k.alpha_rad, k.beta_rad, k.gamma_rad, method);
+        identity = all_zero(k.x_m) && all_zero(k.y_m) && all_zero(k.alpha_rad) &&
+                   all_zero(k.beta_rad) && all_zero(k.gamma_rad);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(axle + e.what());
+      }
+    }
+    wheels_.push_back(std::move(wheels.first));
+    wheels_.push_back(std::move(wheels.second));
+    identity_[2 * i] = identity;
+    identity_[2 * i + 1] = identity;
+  }
+}
+
+kinematics::WheelPose SuspensionKinematics::pose(int wheel, double hub_travel_m,
+                                                 double rack_travel_m) const noexcept {
+  return wheels_[static_cast<std::size_t>(wheel)].evaluate(hub_travel_m, rack_travel_m);
+}
+
+void SuspensionKinematics::update(const Eigen::VectorXd& y, VehicleBus& bus) const noexcept {
+  for (int i = 0; i < bus.wheel_count; ++i) {
+    WheelBus& w = bus.wheels[static_cast<std::size_t>(i)];
+    const double s = y(6 + i);
+    w.hub_travel_m = s;
+    w.steer_at_rack_m = w.rack_at_wheel_m;
+    if (identity_[static_cast<std::size_t>(i)]) continue;  // all offsets and angles stay 0
+    const kinematics::WheelPose p = pose(i, s, w.rack_at_wheel_m);
+    w.hub_x_m = p.x_m.value;
+    w.hub_y_m = p.y_m.value;
+    w.hub_dx_ds = p.x_m.d_dz;
+    w.hub_dy_ds = p.y_m.d_dz;
+    w.camber_rad = p.alpha_rad.value;
+    w.steer_kinematic_rad = p.gamma_rad.value;
+    w.steer_rad = p.gamma_rad.value;
+    w.steer_d_du = p.gamma_rad.d_du;
+  }
+}
+
+}  // namespace rig::model::vehicle
