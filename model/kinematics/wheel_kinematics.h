@@ -30,6 +30,12 @@ class WheelKinematics {
   [[nodiscard]] Interpolation method() const noexcept { return method_; }
   /// Eq. (29) at hub travel z and rack travel u; allocation-free.
   [[nodiscard]] WheelPose evaluate(double hub_travel_m, double rack_travel_m) const noexcept;
+  /// The five tables, to evaluate a subset with one set of weights (table_weights()).
+  [[nodiscard]] const KinematicTable& x() const noexcept { return x_; }
+  [[nodiscard]] const KinematicTable& y() const noexcept { return y_; }
+  [[nodiscard]] const KinematicTable& alpha() const noexcept { return alpha_; }
+  [[nodiscard]] const KinematicTable& beta() const noexcept { return beta_; }
+  [[nodiscard]] const KinematicTable& gamma() const noexcept { return gamma_; }
 
  private:
   KinematicTable x_, y_, alpha_, beta_, gamma_;

@@ -45,6 +45,16 @@ std::pair<WheelKinematics, WheelKinematics> axle_pair(
   return {std::move(left), std::move(right)};
 }
 
+bool nonzero(const KinematicTable& t) {
+  const Grid2D& g = t.grid();
+  for (int k = 0; k < g.z_count; ++k) {
+    for (int l = 0; l < g.u_count; ++l) {
+      if (t.node(k, l) != 0.0) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 kinematics::SuspensionGeometry left_wheel_geometry(const AxleParams& a, const SteeringParams& s) {
@@ -87,10 +97,6 @@ SuspensionKinematics::SuspensionKinematics(const VehicleParams& p) {
         k.bicubic ? kinematics::Interpolation::kBicubic : kinematics::Interpolation::kBilinear;
     const std::string axle = "vehicle: axle " + std::to_string(i + 1) + " kinematics: ";
     std::pair<WheelKinematics, WheelKinematics> wheels;
-    const auto all_zero = [](const std::vector<double>& v) {
-      return std::all_of(v.begin(), v.end(), [](double x) { return x == 0.0; });
-    };
-    bool identity = false;
     if (k.x_m.empty() && k.y_m.empty() && k.alpha_rad.empty() && k.beta_rad.empty() &&
         k.gamma_rad.empty()) {
       // the right wheel's geometry is the mirror image (see AxleKinematicsParams); the steer
@@ -106,25 +112,22 @@ SuspensionKinematics::SuspensionKinematics(const VehicleParams& p) {
       right.bump_steer_per_z = -left.bump_steer_per_z;
       wheels = {kinematics::generate_wheel_kinematics(left, g, method),
                 kinematics::generate_wheel_kinematics(right, g, method)};
-      identity = g.u_count == 1 && left.x_per_z == 0 && left.track_per_z == 0 &&
-                 left.track_per_z2 == 0 && left.camber0_rad == 0 && left.camber_per_z == 0 &&
-                 left.toe0_rad == 0 && left.bump_steer_per_z == 0;
     } else {
       const Grid2D& g = k.grid;
       if (g.u_count > 1 && std::abs(g.u_min + 0.5 * g.u_step * (g.u_count - 1)) > 1e-9)
         throw std::invalid_argument(axle + "the rack-travel grid must be symmetric about 0");
       try {
         wheels = axle_pair(g, k.x_m, k.y_m, k.alpha_rad, k.beta_rad, k.gamma_rad, method);
-        identity = all_zero(k.x_m) && all_zero(k.y_m) && all_zero(k.alpha_rad) &&
-                   all_zero(k.beta_rad) && all_zero(k.gamma_rad);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(axle + e.what());
       }
     }
     wheels_.push_back(std::move(wheels.first));
     wheels_.push_back(std::move(wheels.second));
-    identity_[2 * i] = identity;
-    identity_[2 * i + 1] = identity;
+    for (std::size_t w = wheels_.size() - 2; w < wheels_.size(); ++w) {
+      const WheelKinematics& wk = wheels_[w];
+      used_[w] = {nonzero(wk.x()), nonzero(wk.y()), nonzero(wk.alpha()), nonzero(wk.gamma())};
+    }
   }
 }
 
@@ -135,20 +138,36 @@ kinematics::WheelPose SuspensionKinematics::pose(int wheel, double hub_travel_m,
 
 void SuspensionKinematics::update(const Eigen::VectorXd& y, VehicleBus& bus) const noexcept {
   for (int i = 0; i < bus.wheel_count; ++i) {
-    WheelBus& w = bus.wheels[static_cast<std::size_t>(i)];
+    const auto k = static_cast<std::size_t>(i);
+    WheelBus& w = bus.wheels[k];
     const double s = y(6 + i);
     w.hub_travel_m = s;
     w.steer_at_rack_m = w.rack_at_wheel_m;
-    if (identity_[static_cast<std::size_t>(i)]) continue;  // all offsets and angles stay 0
-    const kinematics::WheelPose p = pose(i, s, w.rack_at_wheel_m);
-    w.hub_x_m = p.x_m.value;
-    w.hub_y_m = p.y_m.value;
-    w.hub_dx_ds = p.x_m.d_dz;
-    w.hub_dy_ds = p.y_m.d_dz;
-    w.camber_rad = p.alpha_rad.value;
-    w.steer_kinematic_rad = p.gamma_rad.value;
-    w.steer_rad = p.gamma_rad.value;
-    w.steer_d_du = p.gamma_rad.d_du;
+    const Used& used = used_[k];
+    if (!(used.x || used.y || used.alpha || used.gamma)) continue;  // all stay 0
+    // one set of interpolation weights for the functions of eq. (29) this wheel has
+    const WheelKinematics& wk = wheels_[k];
+    const kinematics::TableWeights tw =
+        kinematics::table_weights(wk.grid(), wk.method(), s, w.rack_at_wheel_m);
+    if (used.x) {
+      const kinematics::TableValue x = wk.x().evaluate(tw);
+      w.hub_x_m = x.value;
+      w.hub_dx_ds = x.d_dz;
+    }
+    if (used.y) {
+      const kinematics::TableValue v = wk.y().evaluate(tw);
+      w.hub_y_m = v.value;
+      w.hub_dy_ds = v.d_dz;
+    }
+    const double camber = used.alpha ? wk.alpha().evaluate(tw).value : 0.0;
+    double steer = 0.0;
+    if (used.gamma) {
+      const kinematics::TableValue g = wk.gamma().evaluate(tw);
+      steer = g.value;
+      w.steer_d_du = g.d_du;
+    }
+    w.steer_kinematic_rad = steer;
+    set_wheel_orientation(w, steer, camber);
   }
 }
 

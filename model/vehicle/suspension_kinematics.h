@@ -45,9 +45,13 @@ class SuspensionKinematics {
 
  private:
   std::vector<kinematics::WheelKinematics> wheels_;
-  /// Wheels whose five functions are identically zero (an unsteered axle with the zero geometry,
-  /// or given all-zero tables): the hub moves along body z, nothing to interpolate.
-  std::array<bool, kMaxWheels> identity_{};
+  /// Which of x, y, alpha, gamma of each wheel has a non-zero node (beta is not used by the
+  /// framework): identically zero tables are not interpolated (an unsteered axle with the zero
+  /// geometry costs nothing; the hub then moves along body z).
+  struct Used {
+    bool x = false, y = false, alpha = false, gamma = false;
+  };
+  std::array<Used, kMaxWheels> used_{};
 };
 
 }  // namespace rig::model::vehicle

@@ -5,8 +5,10 @@
 /// VehicleModel; every block holds a reference.
 
 #include <array>
+#include <cmath>
 
 #include "model/report.h"
+#include "model/vehicle/chassis_kinematics.h"
 #include "model/vehicle/tmeasy.h"
 
 namespace rig::model::vehicle {
@@ -27,12 +29,14 @@ struct WheelBus {
   double steer_rad = 0;        ///< gamma of eq. (29): toe + steer from the rack (tie rod)
   double tie_rod_force_n = 0;  ///< resisting rack force from this wheel's aligning torque
   // suspension kinematics of eq. (29) at the start of the step (SuspensionKinematics::update)
-  double hub_travel_m = 0;         ///< z(k), where the pose was evaluated
-  double hub_x_m = 0;              ///< wheel-centre offset from the design position, body x
-  double hub_y_m = 0;              ///< body y
-  double hub_dx_ds = 0;            ///< dx/dz: the centre moves along (dx/dz, dy/dz, 1)
-  double hub_dy_ds = 0;            ///< dy/dz
-  double camber_rad = 0;           ///< alpha (rotation about body x)
+  double hub_travel_m = 0;  ///< z(k), where the pose was evaluated
+  double hub_x_m = 0;       ///< wheel-centre offset from the design position, body x
+  double hub_y_m = 0;       ///< body y
+  double hub_dx_ds = 0;     ///< dx/dz: the centre moves along (dx/dz, dy/dz, 1)
+  double hub_dy_ds = 0;     ///< dy/dz
+  double camber_rad = 0;    ///< alpha (rotation about body x)
+  /// Wheel spin axis in body axes, Rz(steer) Rx(camber) e_y (set_wheel_orientation).
+  Vec3 spin_axis = Vec3::UnitY();
   double steer_kinematic_rad = 0;  ///< gamma(z(k), u(k))
   double steer_d_du = 0;           ///< dgamma/du at (z(k), u(k))
   double steer_at_rack_m = 0;      ///< u(k), where gamma was evaluated
@@ -47,6 +51,16 @@ struct WheelBus {
   double slip_x = 0;
   double slip_y = 0;
 };
+
+/// Sets steer (gamma) and camber (alpha) of a wheel and its spin axis Rz(gamma) Rx(alpha) e_y,
+/// once per change, so that the contact kinematics need no trigonometry.
+inline void set_wheel_orientation(WheelBus& w, double steer_rad, double camber_rad) noexcept {
+  w.steer_rad = steer_rad;
+  w.camber_rad = camber_rad;
+  const double cos_camber = std::cos(camber_rad);
+  w.spin_axis = Vec3(-std::sin(steer_rad) * cos_camber, std::cos(steer_rad) * cos_camber,
+                     std::sin(camber_rad));
+}
 
 struct VehicleBus {
   int wheel_count = 0;

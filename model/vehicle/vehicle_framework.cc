@@ -120,7 +120,7 @@ WheelContact VehicleFramework::contact(const Mat3& rot, const Vector& y, const V
   const auto k = static_cast<std::size_t>(i);
   const WheelBus& w = bus_.wheels[k];
   return wheel_contact(rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3),
-                       wheel_centre(i, y(6 + i)), hub_axis(i) * z(6 + i), w.steer_rad, w.camber_rad,
+                       wheel_centre(i, y(6 + i)), hub_axis(i) * z(6 + i), w.spin_axis,
                        p_.axles[k / 2].tire.radius_unloaded_m);
 }
 
@@ -246,28 +246,33 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
         (t.lateral_damping_nspm * rolling * w.curves.normalize_y + slip.f_per_slip + 1e-9);
     // the rows have non-zeros only in the body columns 0..5 and the hub column h: update the
     // 7 x 7 sub-block instead of a dense outer product
-    const Eigen::Index cols[7] = {0, 1, 2, 3, 4, 5, h};
     const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};
     const double damp[3] = {t.vertical_damping_nspm, dx, dy};
+    using Row7 = Eigen::Matrix<double, 7, 1>;
+    Eigen::Matrix<double, 7, 7> dz_block = Eigen::Matrix<double, 7, 7>::Zero();
+    Eigen::Matrix<double, 7, 7> dy_block;
     for (int d = 0; d < 3; ++d) {
       const Vec3& u = *dirs[d];
-      Eigen::Matrix<double, 7, 1> a, b;
+      Row7 a, b;
       a << u, centre.cross(u), es.dot(u);
       b << u, c.lever_m.cross(u), es.dot(u);
-      for (int jj = 0; jj < 7; ++jj) {
-        for (int ii = 0; ii < 7; ++ii) dq_dz(cols[ii], cols[jj]) -= damp[d] * a(ii) * b(jj);
-      }
+      dz_block.noalias() -= (damp[d] * a) * b.transpose();
       if (d == 0) {
         // penetration rate = -n^T J_P z, and y' = K^-1 z: d pen / d y = -n^T J_P K
-        Eigen::Matrix<double, 7, 1> bk;
+        Row7 bk;
         bk << rot * b.segment<3>(0), e_inv.transpose() * b.segment<3>(3), b(6);
-        for (int jj = 0; jj < 7; ++jj) {
-          for (int ii = 0; ii < 7; ++ii) {
-            dq_dy(cols[ii], cols[jj]) -= t.vertical_stiffness_npm * a(ii) * bk(jj);
-          }
-        }
+        dy_block.noalias() = (-t.vertical_stiffness_npm * a) * bk.transpose();
       }
     }
+    // scatter the 7 x 7 block (body columns 0..5 and the hub column h)
+    const auto scatter = [h](const Eigen::Matrix<double, 7, 7>& blk, Matrix& m) {
+      m.topLeftCorner<6, 6>() += blk.topLeftCorner<6, 6>();
+      m.block<6, 1>(0, h) += blk.block<6, 1>(0, 6);
+      m.block<1, 6>(h, 0) += blk.block<1, 6>(6, 0);
+      m(h, h) += blk(6, 6);
+    };
+    scatter(dz_block, dq_dz);
+    scatter(dy_block, dq_dy);
   }
   return true;
 }

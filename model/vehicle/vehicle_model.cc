@@ -187,10 +187,11 @@ void VehicleModel::update_contacts() noexcept {
   const auto& y = framework_->coordinates();
   const auto& z = framework_->speeds();
   kinematics_->update(y, bus_);  // eq. (29) at y_V(k), before any contact is evaluated
+  const Mat3 rot = body_to_road(y(3), y(4), y(5));
   for (int i = 0; i < bus_.wheel_count; ++i) {
     auto& w = bus_.wheels[static_cast<std::size_t>(i)];
     const TireParams& t = p_.axles[static_cast<std::size_t>(i / 2)].tire;
-    const WheelContact c = framework_->contact(y, z, i);
+    const WheelContact c = framework_->contact(rot, y, z, i);
     w.vx_mps = c.vx_mps;
     w.vy_mps = c.vy_mps;
     w.load_n = vertical_tire_force_n(c.penetration_m, c.penetration_rate_mps,
@@ -295,9 +296,10 @@ void VehicleModel::finish_step(double h, ConstVectorRef extra_rate) noexcept {
   const auto& z = framework_->speeds();
   const Vec3 w = z.segment<3>(3);
   accel_body_ = (z.segment<3>(0) - saved_z_.segment<3>(0)) / h + w.cross(z.segment<3>(0));
+  const Mat3 rot = body_to_road(y(3), y(4), y(5));
   for (int i = 0; i < bus_.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    wheel_out_[k] = framework_->wheel_forces(y, z, i);
+    wheel_out_[k] = framework_->wheel_forces(rot, y, z, i);
     bus_.wheels[k].force_x_n = wheel_out_[k].force_x_n;
     bus_.wheels[k].force_y_n = wheel_out_[k].force_y_n;
     bus_.wheels[k].slip_x = wheel_out_[k].slip_x;

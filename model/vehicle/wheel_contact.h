@@ -20,19 +20,17 @@ struct WheelContact {
 
 /// @param centre_m wheel centre relative to the CG (body axes); @param hub_velocity_mps its
 /// velocity relative to the body from hub travel (the kinematics' tangent times the travel rate);
-/// @param steer_rad, camber_rad gamma and alpha of eq. (29): the spin axis is
-/// Rz(gamma) Rx(alpha) e_y. The contact point is the point of the road below the centre.
+/// @param spin_axis the wheel's spin axis Rz(gamma) Rx(alpha) e_y (gamma, alpha of eq. 29; see
+/// set_wheel_orientation). The contact point is the point of the road below the centre.
 inline WheelContact wheel_contact(const Mat3& r_body_to_road, const Vec3& cg_road_m,
                                   const Vec3& v_body, const Vec3& w_body, const Vec3& centre_m,
-                                  const Vec3& hub_velocity_mps, double steer_rad, double camber_rad,
+                                  const Vec3& hub_velocity_mps, const Vec3& spin_axis,
                                   double radius_unloaded_m) noexcept {
   WheelContact c;
   const double height = cg_road_m.z() + r_body_to_road.row(2).dot(centre_m);
   c.normal = r_body_to_road.row(2).transpose();
   c.lever_m = centre_m - height * c.normal;
-  const double cos_camber = std::cos(camber_rad);
-  c.spin_axis = Vec3(-std::sin(steer_rad) * cos_camber, std::cos(steer_rad) * cos_camber,
-                     std::sin(camber_rad));
+  c.spin_axis = spin_axis;
   c.ex = c.spin_axis.cross(c.normal).normalized();
   c.ey = c.normal.cross(c.ex);
   const Vec3 vp = v_body + w_body.cross(c.lever_m) + hub_velocity_mps;

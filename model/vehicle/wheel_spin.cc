@@ -36,7 +36,9 @@ void WheelSpinStage::advance(double h) noexcept {
     w.tie_rod_force_n = w.force_y_n * sp.trail_m * w.steer_d_du;
     w.rack_at_wheel_m = rack - w.tie_rod_force_n / sp.tie_rod_stiffness_npm;
     // gamma of eq. (29) at the new rack travel, linear in u about the step's pose
-    w.steer_rad = w.steer_kinematic_rad + w.steer_d_du * (w.rack_at_wheel_m - w.steer_at_rack_m);
+    set_wheel_orientation(
+        w, w.steer_kinematic_rad + w.steer_d_du * (w.rack_at_wheel_m - w.steer_at_rack_m),
+        w.camber_rad);
     rack_force += w.tie_rod_force_n;
   }
   bus_.rack_force_n = rack_force;
