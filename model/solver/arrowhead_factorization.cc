@@ -29,9 +29,55 @@ ArrowheadFactorization::ArrowheadFactorization(const ArrowheadPartition& partiti
     max_leaf = std::max(max_leaf, n);
   }
   leaf_tmp_.resize(max_leaf);
+  body6_leaves2_ = nb == 6 && !partition.leaf_sizes.empty() &&
+                   std::all_of(partition.leaf_sizes.begin(), partition.leaf_sizes.end(),
+                               [](Eigen::Index n) { return n == 2; });
+  if (body6_leaves2_) {
+    leaf_inverse2_.resize(partition.leaf_sizes.size());
+    leaf_solved2_.resize(partition.leaf_sizes.size());
+    body_coupling2_t_.resize(partition.leaf_sizes.size());
+  }
+}
+
+void ArrowheadFactorization::compute_body6_leaves2(const Matrix& a) noexcept {
+  Mat6 schur = a.topLeftCorner<6, 6>();
+  for (std::size_t i = 0; i < leaf_inverse2_.size(); ++i) {
+    const Eigen::Index o = leaf_offsets_[i];
+    // 2 x 2 leaf: explicit inverse (M_VI's hub blocks are mass + stiffness + damping, far from
+    // singular)
+    const Eigen::Matrix2d l = a.block<2, 2>(o, o);
+    const double det = l(0, 0) * l(1, 1) - l(0, 1) * l(1, 0);
+    Eigen::Matrix2d inv;
+    inv << l(1, 1), -l(0, 1), -l(1, 0), l(0, 0);
+    inv /= det;
+    leaf_inverse2_[i] = inv;
+    leaf_solved2_[i].noalias() = inv * a.block<2, 6>(o, 0);
+    body_coupling2_t_[i] = a.block<6, 2>(0, o).transpose();
+    // Schur complement S = A_BB - sum_i A_Bi A_ii^-1 A_iB
+    schur.noalias() -= body_coupling2_t_[i].transpose() * leaf_solved2_[i];
+  }
+  schur_lu6_.compute(schur);
+}
+
+void ArrowheadFactorization::solve_column_body6_leaves2() const noexcept {
+  Eigen::Matrix<double, 6, 1> body = rhs_.head<6>();
+  for (std::size_t i = 0; i < leaf_inverse2_.size(); ++i) {
+    const Eigen::Vector2d t = leaf_inverse2_[i] * rhs_.segment<2>(leaf_offsets_[i]);
+    body.noalias() -= body_coupling2_t_[i].transpose() * t;
+  }
+  const Eigen::Matrix<double, 6, 1> xb = schur_lu6_.solve(body);
+  sol_.head<6>() = xb;
+  for (std::size_t i = 0; i < leaf_inverse2_.size(); ++i) {
+    const Eigen::Index o = leaf_offsets_[i];
+    sol_.segment<2>(o) = leaf_inverse2_[i] * rhs_.segment<2>(o) - leaf_solved2_[i] * xb;
+  }
 }
 
 void ArrowheadFactorization::compute(const Matrix& a) noexcept {
+  if (body6_leaves2_) {
+    compute_body6_leaves2(a);
+    return;
+  }
   const Eigen::Index nb = partition_.body_size;
   schur_ = a.topLeftCorner(nb, nb);
   for (std::size_t i = 0; i < leaf_lu_.size(); ++i) {
@@ -48,6 +94,10 @@ void ArrowheadFactorization::compute(const Matrix& a) noexcept {
 }
 
 void ArrowheadFactorization::solve_column() const noexcept {
+  if (body6_leaves2_) {
+    solve_column_body6_leaves2();
+    return;
+  }
   const Eigen::Index nb = partition_.body_size;
   // body: S x_B = b_B - sum_i A_Bi A_ii^-1 b_i
   body_rhs_ = rhs_.head(nb);

@@ -11,7 +11,9 @@
 /// Each leaf block is factorized alone, then the body's Schur complement
 /// S = A_BB - sum_i A_Bi A_ii^-1 A_iB. Cost: sum of the small cubes plus n_B^3 instead of
 /// (n_B + sum n_i)^3. All storage is sized in the constructor; compute() and solve() never
-/// allocate.
+/// allocate. The vehicle's partition - a 6-DOF body and 2-DOF leaves (two hub travels per
+/// axle) - takes a fixed-size path (2 x 2 leaf inverses, 6 x 6 Schur LU): the same algebra
+/// without the dynamic-size overhead that dominates at these sizes.
 
 #include <vector>
 
@@ -55,6 +57,8 @@ class ArrowheadFactorization {
 
  private:
   void solve_column() const noexcept;
+  void compute_body6_leaves2(const Matrix& a) noexcept;
+  void solve_column_body6_leaves2() const noexcept;
 
   ArrowheadPartition partition_;
   std::vector<Eigen::Index> leaf_offsets_;
@@ -65,6 +69,15 @@ class ArrowheadFactorization {
   Eigen::MatrixXd schur_;                       ///< S
   Eigen::PartialPivLU<Eigen::MatrixXd> schur_lu_;
   mutable Eigen::VectorXd rhs_, sol_, body_rhs_, leaf_tmp_;
+
+  // fixed-size path: body 6, every leaf 2
+  using Mat6 = Eigen::Matrix<double, 6, 6>;
+  using Mat26 = Eigen::Matrix<double, 2, 6>;
+  bool body6_leaves2_ = false;
+  std::vector<Eigen::Matrix2d> leaf_inverse2_;  ///< A_ii^-1
+  std::vector<Mat26> leaf_solved2_;             ///< A_ii^-1 A_iB
+  std::vector<Mat26> body_coupling2_t_;         ///< A_Bi^T
+  Eigen::PartialPivLU<Mat6> schur_lu6_;
 };
 
 }  // namespace rig::model::solver

@@ -146,6 +146,22 @@ TEST(ArrowheadFactorization, SolvesLikeDenseLu) {
   EXPECT_LT((a * x - b).norm(), 1e-12 * b.norm());
 }
 
+// The vehicle's partition (6-DOF body, 2 hub travels per axle) takes the fixed-size path.
+TEST(ArrowheadFactorization, VehiclePartitionSolvesLikeDenseLu) {
+  for (const std::size_t axles : {1u, 2u, 3u, 6u}) {
+    const ArrowheadPartition p{6, std::vector<Eigen::Index>(axles, 2)};
+    const Eigen::MatrixXd a = random_arrowhead(p, 5 + static_cast<unsigned>(axles));
+    ArrowheadFactorization f(p);
+    f.compute(a);
+    const Eigen::MatrixXd b = Eigen::MatrixXd::Random(p.total_size(), 3);
+    Eigen::MatrixXd x(p.total_size(), 3);
+    f.solve(b, x);
+    const Eigen::MatrixXd x_dense = a.partialPivLu().solve(b);
+    EXPECT_LT((x - x_dense).norm(), 1e-12 * x_dense.norm()) << axles << " axles";
+    EXPECT_LT((a * x - b).norm(), 1e-12 * b.norm()) << axles << " axles";
+  }
+}
+
 TEST(ArrowheadFactorization, IgnoresEntriesOfTheZeroBlocks) {
   const ArrowheadPartition p{3, {2, 2}};
   Eigen::MatrixXd a = random_arrowhead(p, 11);
