@@ -1,5 +1,7 @@
 #include "model/combination/combination.h"
 
+#include "model/combination/parallel_begin.h"
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -66,99 +68,7 @@ void place_units(std::vector<std::unique_ptr<VehicleModel>>& units,
   }
 }
 
-/// Runs begin_step of units 1..N-1 on one worker thread while the caller runs unit 0 (the
-/// option of issue 7). Hand-over by atomics: the worker spins briefly, then sleeps in
-/// std::atomic::wait (futex); nothing allocates after construction.
-class ParallelBegin {
- public:
-  explicit ParallelBegin(std::vector<VehicleModel*> units)
-      : units_(std::move(units)), worker_([this] { run(); }) {}
-  ~ParallelBegin() {
-    stop_.store(true, std::memory_order_relaxed);
-    epoch_.fetch_add(1, std::memory_order_release);
-    epoch_.notify_one();
-    worker_.join();
-  }
-  ParallelBegin(const ParallelBegin&) = delete;
-  ParallelBegin& operator=(const ParallelBegin&) = delete;
-
-  void start(double h) noexcept {
-    h_ = h;
-    const unsigned e = epoch_.fetch_add(1, std::memory_order_release) + 1;
-    target_ = e;
-    epoch_.notify_one();
-  }
-  void wait() noexcept {
-    for (int spin = 0; done_.load(std::memory_order_acquire) != target_; ++spin) {
-      if (spin > 20000) done_.wait(done_.load(std::memory_order_acquire));
-    }
-  }
-
- private:
-  void run() noexcept {
-    unsigned seen = 0;
-    for (;;) {
-      unsigned e = epoch_.load(std::memory_order_acquire);
-      for (int spin = 0; e == seen; ++spin) {
-        if (spin > 20000) epoch_.wait(seen, std::memory_order_acquire);
-        e = epoch_.load(std::memory_order_acquire);
-      }
-      seen = e;
-      if (stop_.load(std::memory_order_relaxed)) return;
-      for (VehicleModel* u : units_) u->begin_step(h_);
-      done_.store(e, std::memory_order_release);
-      done_.notify_one();
-    }
-  }
-
-  std::vector<VehicleModel*> units_;
-  double h_ = 0;
-  unsigned target_ = 0;
-  std::atomic<unsigned> epoch_{0}, done_{0};
-  std::atomic<bool> stop_{false};
-  std::thread worker_;
-};
-
 namespace {
-
-/// A unit as seen by the CoupledStepper: forwards to the VehicleModel; with a ParallelBegin,
-/// unit 0's begin_step starts the worker on the others and theirs wait for it (the stepper
-/// calls begin_step in unit order, so the worker overlaps with unit 0).
-class UnitSlot final : public solver::CouplableSystem {
- public:
-  UnitSlot(VehicleModel& unit, ParallelBegin* parallel, bool first)
-      : unit_(unit), parallel_(parallel), first_(first) {}
-  [[nodiscard]] Eigen::Index coordinate_size() const noexcept override {
-    return unit_.coordinate_size();
-  }
-  void begin_step(double h) noexcept override {
-    if (parallel_ == nullptr) {
-      unit_.begin_step(h);
-    } else if (first_) {
-      parallel_->start(h);
-      unit_.begin_step(h);
-    } else {
-      parallel_->wait();
-    }
-  }
-  [[nodiscard]] ConstVectorRef coordinates() const noexcept override { return unit_.coordinates(); }
-  [[nodiscard]] ConstVectorRef speeds() const noexcept override { return unit_.speeds(); }
-  [[nodiscard]] ConstMatrixRef kinematics_inverse() const noexcept override {
-    return unit_.kinematics_inverse();
-  }
-  [[nodiscard]] ConstVectorRef unconstrained_rate() const noexcept override {
-    return unit_.unconstrained_rate();
-  }
-  void solve_mass(ConstMatrixRef b, MatrixRef x) const noexcept override { unit_.solve_mass(b, x); }
-  void finish_step(double h, ConstVectorRef extra_rate) noexcept override {
-    unit_.finish_step(h, extra_rate);
-  }
-
- private:
-  VehicleModel& unit_;
-  ParallelBegin* parallel_;
-  bool first_;
-};
 
 double wrap_angle(double a) noexcept {
   a = std::remainder(a, 2 * std::numbers::pi);
@@ -172,17 +82,14 @@ Combination::Combination(const CombinationParams& params, double step_size_s)
   std::vector<Eigen::Index> sizes;
   for (const auto& u : units_) sizes.push_back(u->coordinate_size());
   constraint_ = std::make_unique<ChainConstraint>(p_.joints, sizes);
-  if (p_.parallel) {
-    std::vector<VehicleModel*> others;
-    for (std::size_t k = 1; k < units_.size(); ++k) others.push_back(units_[k].get());
-    parallel_ = std::make_unique<ParallelBegin>(std::move(others));
-  }
   std::vector<solver::CouplableSystem*> systems;
-  for (std::size_t k = 0; k < units_.size(); ++k) {
-    slots_.push_back(std::make_unique<UnitSlot>(*units_[k], parallel_.get(), k == 0));
-    systems.push_back(slots_.back().get());
+  for (auto& u : units_) systems.push_back(u.get());
+  if (p_.parallel) {
+    parallel_ = std::make_unique<ParallelBegin>(
+        std::vector<solver::CouplableSystem*>(systems.begin() + 1, systems.end()));
   }
-  stepper_ = std::make_unique<solver::CoupledStepper>(std::move(systems), *constraint_, p_.newton);
+  stepper_ =
+      std::make_unique<ChainStepper>(std::move(systems), *constraint_, p_.newton, parallel_.get());
   saved_lambda_ = Eigen::VectorXd::Zero(constraint_->size());
   // warm start of the very first step: the static hitch loads (down on the leading unit)
   static_lambda_ = Eigen::VectorXd::Zero(constraint_->size());

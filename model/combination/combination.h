@@ -2,7 +2,7 @@
 /// @file
 /// A vehicle combination (issue 7): N separately modelled vehicles (tractor, trailers, dollies)
 /// in a chain, joined by constraints and stepped as an index-3 DAE by the modified implicit Euler
-/// with Newton on the stacked multipliers (eqs. 45-50):
+/// with Newton on the stacked multipliers (eqs. 45-50, ChainStepper):
 ///   1. every unit runs its own force elements, subsystems and framework up to z^u and the
 ///      factorization of its M_VI (eq. 46) - independently, optionally in parallel threads;
 ///   2. Newton on lambda (eqs. 47-49), warm-started from the previous step, stopped on |g| AND on
@@ -10,15 +10,13 @@
 ///   3. every unit finishes with dz = mu lambda (eq. 45).
 /// No Baumgarte parameters, no coupled matrix of the whole combination.
 
-#include <atomic>
 #include <memory>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "model/combination/chain_constraint.h"
+#include "model/combination/chain_stepper.h"
 #include "model/combination/joint.h"
-#include "model/solver/coupled_stepper.h"
 #include "model/stepped_model.h"
 #include "model/vehicle/vehicle_model.h"
 
@@ -81,7 +79,7 @@ class Combination final : public SteppedModel {
     return stepper_->last_report();
   }
   /// Stacked multipliers; joint i's force on its leading unit is lambda.segment<3>(row(i)).
-  [[nodiscard]] const Eigen::VectorXd& multipliers() const noexcept {
+  [[nodiscard]] const ChainStepper::RowVector& multipliers() const noexcept {
     return stepper_->multipliers();
   }
   /// Joint i's force on its leading unit, road frame [N].
@@ -90,17 +88,16 @@ class Combination final : public SteppedModel {
   [[nodiscard]] double joint_violation_m(int i) const noexcept;
   /// Articulation angle (yaw of unit i minus yaw of unit i+1) [rad], wrapped to (-pi, pi].
   [[nodiscard]] double articulation_rad(int i) const noexcept;
-  [[nodiscard]] solver::CoupledStepper& stepper() noexcept { return *stepper_; }
+  [[nodiscard]] ChainStepper& stepper() noexcept { return *stepper_; }
 
  private:
   CombinationParams p_;
   double h_;
   double time_s_ = 0;
   std::vector<std::unique_ptr<vehicle::VehicleModel>> units_;
-  std::vector<std::unique_ptr<solver::CouplableSystem>> slots_;
   std::unique_ptr<ParallelBegin> parallel_;
   std::unique_ptr<ChainConstraint> constraint_;
-  std::unique_ptr<solver::CoupledStepper> stepper_;
+  std::unique_ptr<ChainStepper> stepper_;
   Eigen::VectorXd saved_lambda_, static_lambda_;
 };
 
