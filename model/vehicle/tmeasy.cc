@@ -6,10 +6,6 @@
 namespace rig::model::vehicle {
 namespace {
 
-tire::TmeasyCurve to_tire(const TmeasyCurve& c) noexcept {
-  return {c.initial_slope_n, c.max_force_n, c.slip_at_max, c.sliding_force_n, c.slip_at_sliding};
-}
-
 /// The degressive load law turns negative far beyond 2 F_zN (and the slips could at F_z -> 0):
 /// keep the curve physical there (no force of the wrong sign, s_S > s_M > 0).
 tire::TmeasyCurve guarded(tire::TmeasyCurve c) noexcept {
@@ -23,20 +19,12 @@ tire::TmeasyCurve guarded(tire::TmeasyCurve c) noexcept {
 
 }  // namespace
 
-tire::TmeasyCurvePair tmeasy_longitudinal(const TireParams& t) noexcept {
-  return {to_tire(t.longitudinal_nominal), to_tire(t.longitudinal_double)};
-}
-
-tire::TmeasyCurvePair tmeasy_lateral(const TireParams& t) noexcept {
-  return {to_tire(t.lateral_nominal), to_tire(t.lateral_double)};
-}
-
 TmeasyLoadCurves tmeasy_curves(const TireParams& t, double load_n, double mu) noexcept {
   TmeasyLoadCurves c;
   if (!(load_n > 0.0)) return c;  // lift-off: zero curves, f = 0
   const double q = load_n / t.nominal_load_n;
-  c.x = guarded(tire::curve_at_load(tmeasy_longitudinal(t), q, mu));
-  c.y = guarded(tire::curve_at_load(tmeasy_lateral(t), q, mu));
+  c.x = guarded(tire::curve_at_load(t.longitudinal, q, mu));
+  c.y = guarded(tire::curve_at_load(t.lateral, q, mu));
   if (c.x.initial_slope_n > 0.0 && c.y.initial_slope_n > 0.0) {
     const tire::SlipNormalization n = tire::slip_normalization(c.x, c.y);  // Rill 2011, eq. 3.83
     c.normalize_x = n.x;

@@ -4,9 +4,9 @@
 /// load-dependent curves, normalizing factors and f(s) = F(s)/s of eqs. (14-17) at the current
 /// wheel load and road friction, once per wheel and step, shared by the tire deflection elements
 /// (eq. 24), the wheel-spin stage and the framework. All characteristic math is
-/// model/tire/tmeasy_characteristic.h; this file maps the vehicle's tire parameters onto it and
-/// guards lift-off. The deflection dynamics (eqs. 22-26) live in tire_deflection.h,
-/// wheel_spin.cc and vehicle_framework.cc.
+/// model/tire/tmeasy_characteristic.h (and the curves are tire::TmeasyCurvePair in TireParams);
+/// this file guards lift-off and the far ends of the load law. The deflection dynamics
+/// (eqs. 22-26) live in tire_deflection.h, wheel_spin.cc and vehicle_framework.cc.
 
 #include "model/tire/tmeasy_characteristic.h"
 #include "model/tire/tmeasy_params.h"
@@ -28,11 +28,6 @@ struct TmeasySlip {
   double slip_y = 0;      ///< s_y^N
   double f_per_slip = 0;  ///< f(s) = F(s)/s [N], f(0) = dF0 of the slip direction
 };
-
-/// The vehicle tire's curves as model/tire parameters (pairs at F_zN and 2 F_zN; mu0 = 1, since
-/// the vehicle files give the curves on a dry road). Load time.
-[[nodiscard]] tire::TmeasyCurvePair tmeasy_longitudinal(const TireParams& tire) noexcept;
-[[nodiscard]] tire::TmeasyCurvePair tmeasy_lateral(const TireParams& tire) noexcept;
 
 /// The load-dependent curves (tire::curve_at_load: degressive in the load, slips linear; mu/mu0
 /// scales F_M, F_S, s_M, s_S) and the normalizing factors (tire::slip_normalization). Lift-off

@@ -8,29 +8,20 @@
 #include <vector>
 
 #include "model/kinematics/kinematic_table.h"
+#include "model/tire/tmeasy_params.h"
 
 namespace rig::model::vehicle {
 
-/// TMeasy characteristic of one direction at one wheel load (tmeasy.de; Rill 2011, ch. 3).
-struct TmeasyCurve {
-  double initial_slope_n = 0;  ///< dF0 [N per unit slip]
-  double max_force_n = 0;      ///< F_M [N]
-  double slip_at_max = 0;      ///< s_M [-]
-  double sliding_force_n = 0;  ///< F_S [N]
-  double slip_at_sliding = 0;  ///< s_S [-]
-};
-
-/// TMeasy tire: curves at nominal load F_zN and at 2 F_zN (load dependence by the standard
-/// degressive interpolation), plus the deflection dynamics of eqs. (22-24).
+/// TMeasy tire: the characteristic curves of model/tire (tire::TmeasyCurvePair: dF0, F_M, s_M,
+/// F_S, s_S at F_zN and 2 F_zN, degressive load law; measured at mu0 = 1), plus the vertical
+/// tire and the deflection dynamics of eqs. (22-24).
 struct TireParams {
   double radius_unloaded_m = 0.3;
   double vertical_stiffness_npm = 2.5e5;
   double vertical_damping_nspm = 500;
   double nominal_load_n = 4000;
-  TmeasyCurve longitudinal_nominal{};  ///< at F_zN
-  TmeasyCurve longitudinal_double{};   ///< at 2 F_zN
-  TmeasyCurve lateral_nominal{};
-  TmeasyCurve lateral_double{};
+  tire::TmeasyCurvePair longitudinal{};       ///< F_x(s_x) at F_zN and 2 F_zN
+  tire::TmeasyCurvePair lateral{};            ///< F_y(s_y) at F_zN and 2 F_zN
   double longitudinal_stiffness_npm = 1.8e5;  ///< c_x, eq. (22)
   double longitudinal_damping_nspm = 500;     ///< d_x
   double lateral_stiffness_npm = 1.2e5;       ///< c_y

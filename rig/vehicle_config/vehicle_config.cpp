@@ -7,9 +7,9 @@
 namespace rig::vehicle_config {
 namespace {
 
+using model::tire::TmeasyCurve;
 using model::vehicle::AxleParams;
 using model::vehicle::TireParams;
-using model::vehicle::TmeasyCurve;
 using model::vehicle::VehicleParams;
 
 constexpr double kBig = 1e12;
@@ -18,13 +18,12 @@ TmeasyCurve read_curve(io::StrictTable t) {
   TmeasyCurve c;
   c.initial_slope_n = t.number_in("initial_slope_n", 1, kBig);
   c.max_force_n = t.number_in("max_force_n", 1, kBig);
-  c.slip_at_max = t.number_in("slip_at_max", 1e-3, 10);
-  c.sliding_force_n = t.number_in("sliding_force_n", 0, kBig);
-  c.slip_at_sliding = t.number_in("slip_at_sliding", 1e-3, 100);
+  c.max_slip = t.number_in("slip_at_max", 1e-3, 10);
+  c.slide_force_n = t.number_in("sliding_force_n", 0, kBig);
+  c.slide_slip = t.number_in("slip_at_sliding", 1e-3, 100);
   t.finish();
-  if (c.slip_at_sliding <= c.slip_at_max) throw t.error("slip_at_sliding must exceed slip_at_max");
-  if (c.sliding_force_n > c.max_force_n)
-    throw t.error("sliding_force_n must not exceed max_force_n");
+  if (c.slide_slip <= c.max_slip) throw t.error("slip_at_sliding must exceed slip_at_max");
+  if (c.slide_force_n > c.max_force_n) throw t.error("sliding_force_n must not exceed max_force_n");
   return c;
 }
 
@@ -34,10 +33,10 @@ TireParams read_tire(io::StrictTable t) {
   p.vertical_stiffness_npm = t.number_in("vertical_stiffness_npm", 1e3, 1e8);
   p.vertical_damping_nspm = t.number_in("vertical_damping_nspm", 0, 1e6);
   p.nominal_load_n = t.number_in("nominal_load_n", 10, 1e6);
-  p.longitudinal_nominal = read_curve(t.table("longitudinal_nominal"));
-  p.longitudinal_double = read_curve(t.table("longitudinal_double"));
-  p.lateral_nominal = read_curve(t.table("lateral_nominal"));
-  p.lateral_double = read_curve(t.table("lateral_double"));
+  p.longitudinal.at_nominal = read_curve(t.table("longitudinal_nominal"));
+  p.longitudinal.at_double = read_curve(t.table("longitudinal_double"));
+  p.lateral.at_nominal = read_curve(t.table("lateral_nominal"));
+  p.lateral.at_double = read_curve(t.table("lateral_double"));
   p.longitudinal_stiffness_npm = t.number_in("longitudinal_stiffness_npm", 1e3, 1e8);
   p.longitudinal_damping_nspm = t.number_in("longitudinal_damping_nspm", 1, 1e6);
   p.lateral_stiffness_npm = t.number_in("lateral_stiffness_npm", 1e3, 1e8);

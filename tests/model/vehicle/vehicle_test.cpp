@@ -55,8 +55,8 @@ TEST(Vehicle, TireCharacteristicIsModelTire) {
   const TireParams& t = sedan().axles[0].tire;
   tire::TmeasyParams tp;
   tp.nominal_load_n = t.nominal_load_n;
-  tp.longitudinal = tmeasy_longitudinal(t);
-  tp.lateral = tmeasy_lateral(t);
+  tp.longitudinal = t.longitudinal;
+  tp.lateral = t.lateral;
   tp.slip_velocity_mps = t.velocity_floor_mps;
   const tire::TmeasyTire reference(tp);
   const double r = 0.3;
