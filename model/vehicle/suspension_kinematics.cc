@@ -1,6 +1,5 @@
 #include "model/vehicle/suspension_kinematics.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
