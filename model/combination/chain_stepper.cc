@@ -36,12 +36,12 @@ void ChainStepper::evaluate(bool with_matrix) noexcept {
     y_[j] = y_u_[j];
     y_[j].noalias() += w_[j] * lambda_;  // eq. (45): linear in lambda
   }
-  JointEvaluation e;
   for (int i = 0; i < constraint_.joint_count(); ++i) {
     const auto k = static_cast<std::size_t>(i);
     const Joint& joint = constraint_.joint(i);
     const int rows = joint.size();
     const Eigen::Index r = constraint_.row(i);
+    JointEvaluation& e = cache_[k];
     joint.evaluate(y_[k], y_[k + 1], e);
     g_.segment(r, rows) = e.g.head(rows);
     if (with_matrix) {  // eqs. (49-50): dg/dlambda = sum_j dg/dy_j W_j
@@ -61,14 +61,16 @@ solver::NewtonReport ChainStepper::step(double h) noexcept {
     for (solver::CouplableSystem* u : units_) u->begin_step(h);
   }
   // J_j = dg/dy_j K_j^-1 at y(k) (chassis block of K^-1) -> b_j = [J_j^T; 0]
-  JointEvaluation e;
   for (auto& b : b_) b.setZero();
   for (int i = 0; i < constraint_.joint_count(); ++i) {
     const auto k = static_cast<std::size_t>(i);
     const Joint& joint = constraint_.joint(i);
     const int rows = joint.size();
     const Eigen::Index r = constraint_.row(i);
-    joint.evaluate(units_[k]->coordinates().head<6>(), units_[k + 1]->coordinates().head<6>(), e);
+    JointEvaluation& e = cache_[k];
+    if (!cache_valid_) {
+      joint.evaluate(units_[k]->coordinates().head<6>(), units_[k + 1]->coordinates().head<6>(), e);
+    }
     // copies: the Ref returned by kinematics_inverse() is a temporary
     const Matrix6 ka = units_[k]->kinematics_inverse().topLeftCorner<6, 6>();
     const Matrix6 kb = units_[k + 1]->kinematics_inverse().topLeftCorner<6, 6>();
@@ -118,6 +120,7 @@ solver::NewtonReport ChainStepper::step(double h) noexcept {
     ++report.iterations;
   }
   report_ = report;
+  cache_valid_ = true;  // the last evaluate() was at the final lambda, i.e. at y(k+1)
   // eq. (45): z(k+1) = z(k) + h (z^u + mu lambda)
   for (std::size_t j = 0; j < units_.size(); ++j) {
     dz_[j].noalias() = mu_[j] * lambda_;

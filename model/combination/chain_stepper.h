@@ -12,6 +12,7 @@
 /// stopped on |g| and on the lambda increment as solver::ConstraintNewton (accurate forces).
 /// Construction allocates; step() never does.
 
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -46,6 +47,7 @@ class ChainStepper {
   [[nodiscard]] const RowVector& multipliers() const noexcept { return lambda_; }
   void set_multipliers(const Eigen::Ref<const Eigen::VectorXd>& lambda) noexcept {
     lambda_ = lambda;
+    cache_valid_ = false;  // a reset or a reverted step: the cached dg/dy is stale
   }
   [[nodiscard]] const solver::NewtonReport& last_report() const noexcept { return report_; }
   [[nodiscard]] const solver::NewtonParams& params() const noexcept { return params_; }
@@ -67,6 +69,10 @@ class ChainStepper {
   std::vector<Eigen::VectorXd> dz_;      // per unit: n_j
   std::vector<Vector6> y_u_, y_;         // chassis coordinates
   std::vector<ChassisMatrix> w_;         // 6 x m
+  /// dg/dy of every joint at the last Newton iterate = y(k+1) of the last step, reused as the
+  /// dg/dy at y(k) of the next step (one joint evaluation less per step).
+  std::array<JointEvaluation, kMaxJoints> cache_{};
+  bool cache_valid_ = false;
   solver::NewtonReport report_;
 };
 

@@ -1,19 +1,35 @@
 #include "model/combination/joint.h"
 
+#include <cmath>
+
 namespace rig::model::combination {
 
-using vehicle::body_rates_from_euler_rates;
-using vehicle::body_to_road;
 using vehicle::skew;
+
+namespace {
+
+/// R = body_to_road(yaw, pitch, roll) and E = body_rates_from_euler_rates(pitch, roll) (omega_body
+/// = E [yaw', pitch', roll']) from one sin/cos per angle (chassis_kinematics.h has them apart).
+void attitude(const Eigen::Ref<const Eigen::VectorXd>& y, Mat3& r, Mat3& e) noexcept {
+  const double cy = std::cos(y(3)), sy = std::sin(y(3));
+  const double cp = std::cos(y(4)), sp = std::sin(y(4));
+  const double cr = std::cos(y(5)), sr = std::sin(y(5));
+  r << cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr,  //
+      sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr,   //
+      -sp, cp * sr, cp * cr;
+  e << -sp, 0, 1,      //
+      cp * sr, cr, 0,  //
+      cp * cr, -sr, 0;
+}
+
+}  // namespace
 
 void Joint::evaluate(const Eigen::Ref<const Eigen::VectorXd>& y_a,
                      const Eigen::Ref<const Eigen::VectorXd>& y_b,
                      JointEvaluation& out) const noexcept {
-  const Mat3 ra = body_to_road(y_a(3), y_a(4), y_a(5));
-  const Mat3 rb = body_to_road(y_b(3), y_b(4), y_b(5));
-  // omega_body = E(pitch, roll) [yaw', pitch', roll']
-  const Mat3 ea = body_rates_from_euler_rates(y_a(4), y_a(5));
-  const Mat3 eb = body_rates_from_euler_rates(y_b(4), y_b(5));
+  Mat3 ra, rb, ea, eb;
+  attitude(y_a, ra, ea);
+  attitude(y_b, rb, eb);
   // eq. (39), ball rows: g = r_a + R_a p_a - r_b - R_b p_b
   out.g.head<3>() =
       y_a.head<3>() + ra * p_.leading_point_m - y_b.head<3>() - rb * p_.trailing_point_m;

@@ -380,6 +380,13 @@ TEST(Combination, ParallelIsBitwiseSerialAndNoStepAllocates) {
   }
   Eigen::internal::set_is_malloc_allowed(true);
   EXPECT_EQ(counter.count(), 0u);
+  // many more hand-overs to the worker thread (a lost wake-up would hang here: ctest timeout)
+  for (int k = 0; k < 30000; ++k) {
+    inputs(serial.time_s(), a);
+    inputs(parallel.time_s(), b);
+    ASSERT_EQ(serial.step(a), StepStatus::kOk);
+    ASSERT_EQ(parallel.step(b), StepStatus::kOk);
+  }
   EXPECT_EQ(a.value, b.value);  // bitwise: the same arithmetic on another thread
   EXPECT_EQ(serial.unit(1).coordinates(), parallel.unit(1).coordinates());
   EXPECT_EQ(report.unit_count, 2);
