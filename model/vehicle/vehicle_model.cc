@@ -197,7 +197,9 @@ void VehicleModel::update_contacts() noexcept {
     w.load_n = vertical_tire_force_n(c.penetration_m, c.penetration_rate_mps,
                                      t.vertical_stiffness_npm, t.vertical_damping_nspm);
     w.radius_dynamic_m = dynamic_radius_m(t.radius_unloaded_m, c.penetration_m);
-    w.curves = tmeasy_curves(t, w.load_n, p_.road.friction);
+    const double mu =
+        (i % 2 == 1 && p_.road.friction_right >= 0) ? p_.road.friction_right : p_.road.friction;
+    w.curves = tmeasy_curves(t, w.load_n, mu);
     w.f_per_slip = tmeasy_slip(w.curves, w.vx_mps, w.vy_mps, w.spin_radps, w.radius_dynamic_m,
                                t.velocity_floor_mps)
                        .f_per_slip;

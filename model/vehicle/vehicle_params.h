@@ -144,6 +144,8 @@ struct RoadParams {
   double grade = 0;       ///< tan of the uphill slope in +x [-] (0.2 = 20 %)
   double bank = 0;        ///< tan of the bank slope, uphill in +y [-]
   double friction = 1.0;  ///< mu, scales F_M and F_S of all tires
+  /// Split mu: mu under the right-hand wheels (odd wheel index); < 0: the same as friction.
+  double friction_right = -1.0;
   double gravity_mps2 = 9.81;
 };
 

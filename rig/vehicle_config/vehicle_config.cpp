@@ -229,6 +229,8 @@ model::vehicle::RoadParams read_road(io::StrictTable& m) {
   r.grade = m.number_in("road_grade", 0, -1, 1);
   r.bank = m.number_in("road_bank", 0, -1, 1);
   r.friction = m.number_in("road_friction", 1.0, 0.05, 2);
+  if (m.has("road_friction_right"))  // split mu: the right-hand wheels
+    r.friction_right = m.number_in("road_friction_right", 0.05, 2);
   return r;
 }
 

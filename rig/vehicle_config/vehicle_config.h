@@ -20,8 +20,8 @@ namespace rig::vehicle_config {
 /// Reads a whole vehicle file.
 model::vehicle::VehicleParams load_vehicle_file(const std::filesystem::path& file);
 
-/// Reads the road keys (road_grade, road_bank, road_friction) of a maneuver's [model] table;
-/// absent keys keep the defaults (flat, dry).
+/// Reads the road keys (road_grade, road_bank, road_friction, road_friction_right for split mu)
+/// of a maneuver's [model] table; absent keys keep the defaults (flat, dry).
 model::vehicle::RoadParams read_road(io::StrictTable& model_table);
 
 /// The vehicle keys of a rig configuration's [model] table (kind = "vehicle"):

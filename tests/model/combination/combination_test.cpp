@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <numbers>
@@ -322,6 +323,85 @@ TEST(Combination, LowSpeedCircleArticulationMatchesKinematicEstimate) {
         radius, measured, kinematic, 100 * (measured - kinematic) / kinematic,
         z(1) + yaw_rate * x_rear);
     EXPECT_NEAR(measured, kinematic, 0.05 * kinematic);
+  }
+}
+
+TEST(Combination, SplitMuBrakingJackknifeTendencyWithoutBreakdown) {
+  // Straight-line braking on split mu (left wheels mu = 1.0, right wheels 0.2), steering wheel
+  // held straight (no driver correction, no ABS, the low-mu wheels lock): the brake forces on
+  // the left yaw the tractor to the left (+yaw) and the trailer swings out against it - with
+  // these inputs the combination jackknifes completely (there is no contact model between the
+  // units, so the articulation may pass 90 deg). Writes the history as CSV
+  // (RIG_SPLIT_MU_CSV=dir). Asserts: the yaw goes to the high-mu side, the articulation grows
+  // past 0.3 rad, no numerical breakdown (finite, |g| < 0.1 mm, <= 2 Newton iterations) and the
+  // same motion at h = 1 and 2 ms (max articulation within 5 %).
+  struct Case {
+    const char* file;
+    double speed_mps, front_pa, rear_pa, seconds;
+  };
+  std::vector<double> articulation_by_run;
+  for (const double h : {1e-3, 2e-3}) {
+    for (const Case& k : {Case{kCarTrailer, 80 / 3.6, 6e6, 3e6, 6.0},
+                          Case{kTractorSemi, 60 / 3.6, 6e5, 6e5, 8.0}}) {
+      CombinationParams p = load(k.file);
+      for (auto& u : p.units) {
+        u.road.friction = 1.0;
+        u.road.friction_right = 0.2;
+      }
+      Combination c(p, h);
+      c.set_forward_speed(k.speed_mps);
+      Signals s = driver_inputs();
+      s[Signal::kGearRequest] = 0;
+      double max_articulation = 0, max_g = 0, max_yaw = 0, first_yaw = 0;
+      int max_it = 0;
+      const char* dir = std::getenv("RIG_SPLIT_MU_CSV");
+      FILE* csv = nullptr;
+      if (dir != nullptr && h == 1e-3) {
+        const std::string name =
+            std::string(dir) + "/split-mu-" +
+            (k.file == std::string(kCarTrailer) ? "car-trailer" : "tractor-semitrailer") + ".csv";
+        csv = std::fopen(name.c_str(), "w");
+        if (csv != nullptr)
+          std::fprintf(csv, "t_s,x_m,y_m,yaw_rad,articulation_rad,speed_mps,fx_n,fy_n,fz_n\n");
+      }
+      const long n = std::lround(k.seconds / h);
+      for (long step = 0; step < n; ++step) {
+        const double ramp = std::min(1.0, c.time_s() / 0.3);
+        s[Signal::kThrottlePedal] = 0;
+        s[Signal::kBrakePressureFront] = ramp * k.front_pa;
+        s[Signal::kBrakePressureRear] = ramp * k.rear_pa;
+        ASSERT_EQ(c.step(s), StepStatus::kOk) << k.file << " t = " << c.time_s();
+        max_articulation = std::max(max_articulation, std::abs(c.articulation_rad(0)));
+        max_yaw = std::max(max_yaw, std::abs(c.unit(0).coordinates()(3)));
+        if (first_yaw == 0 && std::abs(c.unit(0).coordinates()(3)) > 0.01)
+          first_yaw = c.unit(0).coordinates()(3);
+        max_g = std::max(max_g, c.joint_violation_m(0));
+        max_it = std::max(max_it, c.last_newton().iterations);
+        if (csv != nullptr && step % 10 == 0) {
+          const Vec3 f = c.joint_force_n(0);
+          const auto& y = c.unit(0).coordinates();
+          std::fprintf(csv, "%.3f,%.4f,%.4f,%.5f,%.5f,%.4f,%.1f,%.1f,%.1f\n", c.time_s(), y(0),
+                       y(1), y(3), c.articulation_rad(0), c.unit(0).speeds()(0), f.x(), f.y(),
+                       f.z());
+        }
+      }
+      if (csv != nullptr) std::fclose(csv);
+      std::printf(
+          "split mu h = %.0f ms %s: tractor yaw %.1f deg, max articulation %.1f deg, "
+          "speed at end %.2f m/s, max |g| %.2g m, max Newton iterations %d\n",
+          h * 1e3, k.file, max_yaw * 180 / std::numbers::pi,
+          max_articulation * 180 / std::numbers::pi, c.unit(0).speeds()(0), max_g, max_it);
+      EXPECT_GT(first_yaw, 0.0);  // towards the high-mu (left) side
+      EXPECT_GT(max_articulation, 0.3);
+      EXPECT_LT(max_g, 1e-4);
+      EXPECT_LE(max_it, 2);
+      articulation_by_run.push_back(max_articulation);
+    }
+  }
+  ASSERT_EQ(articulation_by_run.size(), 4u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(articulation_by_run[i + 2], articulation_by_run[i],
+                0.05 * articulation_by_run[i]);  // h = 2 ms vs 1 ms
   }
 }
 
