@@ -193,6 +193,15 @@ TEST(Combination, DriftBelowTenthMillimetreWithAtMostTwoNewtonIterations) {
     EXPECT_LE(st.max_iterations, 2);
     // and it really braked to (near) stand-still and turned through the lane change
     EXPECT_LT(std::abs(c.unit(0).speeds()(0)), 2.0);
+    // the paper's criterion, |g| only (with the same 1e-7 m tolerance): for comparison
+    CombinationParams p = load(k.file);
+    p.newton.criterion = solver::NewtonCriterion::kPosition;
+    Combination position_only(p, 1e-3);
+    const DriftStats sp = lane_change_and_brake(position_only, k.speed_mps, k.brake_time_s,
+                                                k.front_pa, k.rear_pa, k.seconds);
+    print_stats("  |g|-only criterion", sp);
+    EXPECT_LT(sp.max_violation_m, 1e-4);
+    EXPECT_LE(sp.max_iterations, 2);
   }
 }
 
