@@ -45,8 +45,8 @@ void ChainStepper::evaluate(bool with_matrix) noexcept {
     joint.evaluate(y_[k], y_[k + 1], e);
     g_.segment(r, rows) = e.g.head(rows);
     if (with_matrix) {  // eqs. (49-50): dg/dlambda = sum_j dg/dy_j W_j
-      newton_matrix_.middleRows(r, rows).noalias() = e.dg_dya.topRows(rows) * w_[k];
-      newton_matrix_.middleRows(r, rows).noalias() += e.dg_dyb.topRows(rows) * w_[k + 1];
+      newton_matrix_.middleRows(r, rows).noalias() = e.dg_dya.topRows(rows).lazyProduct(w_[k]);
+      newton_matrix_.middleRows(r, rows).noalias() += e.dg_dyb.topRows(rows).lazyProduct(w_[k + 1]);
     }
   }
 }
@@ -60,6 +60,7 @@ solver::NewtonReport ChainStepper::step(double h) noexcept {
   } else {
     for (solver::CouplableSystem* u : units_) u->begin_step(h);
   }
+  // (lazyProduct: these products are tiny, Eigen's GEMM kernel would cost more than the work)
   // J_j = dg/dy_j K_j^-1 at y(k) (chassis block of K^-1) -> b_j = [J_j^T; 0]
   for (auto& b : b_) b.setZero();
   for (int i = 0; i < constraint_.joint_count(); ++i) {
@@ -75,9 +76,9 @@ solver::NewtonReport ChainStepper::step(double h) noexcept {
     const Matrix6 ka = units_[k]->kinematics_inverse().topLeftCorner<6, 6>();
     const Matrix6 kb = units_[k + 1]->kinematics_inverse().topLeftCorner<6, 6>();
     b_[k].topRows<6>().middleCols(r, rows).noalias() =
-        ka.transpose() * e.dg_dya.topRows(rows).transpose();
+        ka.transpose().lazyProduct(e.dg_dya.topRows(rows).transpose());
     b_[k + 1].topRows<6>().middleCols(r, rows).noalias() =
-        kb.transpose() * e.dg_dyb.topRows(rows).transpose();
+        kb.transpose().lazyProduct(e.dg_dyb.topRows(rows).transpose());
   }
   for (std::size_t j = 0; j < units_.size(); ++j) {
     const solver::CouplableSystem& u = *units_[j];
@@ -87,7 +88,7 @@ solver::NewtonReport ChainStepper::step(double h) noexcept {
     z.noalias() += h * u.unconstrained_rate().head<6>();
     y_u_[j] = u.coordinates().head<6>();
     y_u_[j].noalias() += h * k_inv * z;
-    w_[j].noalias() = (h * h) * k_inv * mu_[j].topRows<6>();
+    w_[j].noalias() = ((h * h) * k_inv).lazyProduct(mu_[j].topRows<6>());
   }
   // eqs. (47-49): Newton on the stacked lambda, warm-started (see constraint_coupling.h for the
   // criterion: |g| and the relative lambda increment)
