@@ -414,6 +414,59 @@ TEST(Combination, SplitMuBrakingJackknifeTendencyWithoutBreakdown) {
   }
 }
 
+TEST(Combination, ThreeUnitTruckDollySemitrailerChain) {
+  // Any chain: the 6x4 rigid truck pulls a 2-axle dolly by a drawbar (ball joint at the eye),
+  // the dolly carries the semitrailer on a fifth wheel - 3 units, 7 multipliers. Lane change at
+  // 50 km/h, then braking: drift, Newton iterations, static loads handed down the chain.
+  const CombinationParams semi = load(kTractorSemi);
+  CombinationParams p;
+  p.newton = default_combination_newton_params();
+  p.units.push_back(
+      vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml"));
+  vehicle::VehicleParams dolly = semi.units[1];
+  dolly.name = "dolly";
+  dolly.chassis.mass_kg = 900;
+  dolly.chassis.inertia_kgm2 = {600, 900, 1200};
+  dolly.chassis.cg_height_m = 0.9;
+  dolly.chassis.drag_area_m2 = 0.5;
+  dolly.axles.resize(2);
+  dolly.axles[0].position_x_m = 0.65;
+  dolly.axles[1].position_x_m = -0.65;
+  p.units.push_back(dolly);
+  p.units.push_back(semi.units[1]);
+  p.joints.push_back(
+      make_joint_params(JointKind::kBall, p.units[0], -4.2, p.units[1], 3.2, 0.9));  // drawbar
+  p.joints.push_back(
+      make_joint_params(JointKind::kFifthWheel, p.units[1], 0.0, p.units[2], 4.8, 1.2));
+  Combination c(p, 1e-3);
+  // static loads: the semitrailer's kingpin load on the dolly, the dolly's drawbar load on the
+  // truck, after 1 s standing
+  Signals s = driver_inputs();
+  s[Signal::kGearRequest] = 0;
+  for (int k = 0; k < 1000; ++k) ASSERT_EQ(c.step(s), StepStatus::kOk);
+  std::printf(
+      "truck + dolly + semitrailer standing: drawbar force (%.0f, %.0f, %.0f) N, kingpin "
+      "force (%.0f, %.0f, %.0f) N (static %.0f / %.0f N)\n",
+      c.joint_force_n(0).x(), c.joint_force_n(0).y(), c.joint_force_n(0).z(),
+      c.joint_force_n(1).x(), c.joint_force_n(1).y(), c.joint_force_n(1).z(),
+      c.unit(1).framework().support_load_n(), c.unit(2).framework().support_load_n());
+  EXPECT_NEAR(-c.joint_force_n(1).z(), c.unit(2).framework().support_load_n(),
+              0.02 * c.unit(2).framework().support_load_n());
+  EXPECT_NEAR(-c.joint_force_n(0).z(), c.unit(1).framework().support_load_n(),
+              0.02 * std::abs(c.unit(1).framework().support_load_n()) + 50);
+  const DriftStats st = lane_change_and_brake(c, 50 / 3.6, 13.0, 7e5, 7e5, 18.0);
+  print_stats("truck + dolly + semitrailer", st);
+  ASSERT_TRUE(st.finite);
+  EXPECT_LT(st.max_violation_m, 1e-4);
+  EXPECT_LE(st.max_iterations, 2);
+  EXPECT_LT(std::abs(c.unit(0).speeds()(0)), 2.0);
+  ModelReport report;
+  c.fill_report(report);
+  EXPECT_EQ(report.unit_count, 3);
+  EXPECT_EQ(report.joint_count, 2);
+  EXPECT_EQ(report.units[2].wheel_count, 6);
+}
+
 TEST(Combination, NoNaNAtOneAndTwoMilliseconds) {
   for (const double h : {1e-3, 2e-3}) {
     for (const char* file : {kCarTrailer, kTractorSemi}) {
