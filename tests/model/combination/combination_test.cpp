@@ -123,6 +123,28 @@ void print_stats(const char* what, const DriftStats& st) {
   std::printf("\n");
 }
 
+TEST(CombinationConfig, MissingJointIsAnErrorWithFileAndLine) {
+  const std::string file = ::testing::TempDir() + "/combination-missing-joint.toml";
+  {
+    FILE* f = std::fopen(file.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fprintf(f,
+                 "[model]\nkind = \"combination\"\n[[model.unit]]\nvehicle = "
+                 "\"%s/config/vehicles/sedan.toml\"\n[[model.unit]]\nvehicle = "
+                 "\"%s/config/vehicles/trailer-1axle.toml\"\n",
+                 RIG_SOURCE_DIR, RIG_SOURCE_DIR);
+    std::fclose(f);
+  }
+  try {
+    (void)load(file.c_str());
+    FAIL() << "no error";
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(file), std::string::npos) << what;
+    EXPECT_NE(what.find("joint"), std::string::npos) << what;
+  }
+}
+
 TEST(Joint, PartialDerivativesMatchFiniteDifferences) {
   for (const JointKind kind : {JointKind::kBall, JointKind::kFifthWheel}) {
     JointParams p;
