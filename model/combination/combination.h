@@ -22,20 +22,20 @@
 
 namespace rig::model::combination {
 
+/// Newton settings of the combinations: |g| <= 1e-7 m (or rad) and the last lambda increment
+/// below 1e-3 of |lambda| + 1 N (joint forces to 0.1 %).
+solver::NewtonParams default_combination_newton_params() noexcept;
+
 struct CombinationParams {
   std::string name;
   /// Leading unit first. A trailer is a vehicle without steered and driven axles.
   std::vector<vehicle::VehicleParams> units;
   /// joints[i] couples units[i] and units[i+1].
   std::vector<JointParams> joints;
-  solver::NewtonParams newton{};
+  solver::NewtonParams newton = default_combination_newton_params();
   /// Run begin_step of units 1..N-1 on a worker thread while unit 0 runs on the caller's.
   bool parallel = false;
 };
-
-/// Newton settings of the combinations: |g| <= 1e-7 m (or rad) and the last lambda increment
-/// below 1e-3 of |lambda| + 1 N (joint forces to 0.1 %).
-solver::NewtonParams default_combination_newton_params() noexcept;
 
 /// A joint at a point `height_m` above the ground in the design position, `leading_x_m` from
 /// the leading unit's CG and `trailing_x_m` from the trailing unit's (x forward).
