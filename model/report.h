@@ -55,6 +55,7 @@ struct DrivetrainReport {
 struct JointReport {
   std::array<double, 3> force_n{};  ///< constraint force on the leading unit, road frame
   double violation_m = 0;           ///< |g|
+  double rod_force_n = 0;           ///< tow bar: the rod force, tension positive (else 0)
   std::int32_t newton_iterations = 0;
 };
 

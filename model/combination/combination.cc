@@ -2,6 +2,7 @@
 
 #include "model/combination/parallel_begin.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -40,16 +41,20 @@ std::vector<std::unique_ptr<VehicleModel>> build_units(const CombinationParams& 
   double hitch_load_n = 0;  // static vertical load of unit i+1 on unit i (down on i)
   for (std::size_t k = n; k-- > 0;) {
     VehicleParams p = params.units[k];
-    if (k + 1 < n) {  // carries the next unit's static hitch load
+    // a tow bar (pinned rod, level in the design position) carries no static vertical load:
+    // the towed unit stands on its own axles
+    if (k + 1 < n && params.joints[k].kind != JointKind::kTowBar) {
+      // carries the next unit's static hitch load
       p.chassis.payload_n = hitch_load_n;
       p.chassis.payload_x_m = params.joints[k].leading_point_m.x();
     }
-    if (k > 0) {  // held at its hitch by the unit in front
+    const bool held = k > 0 && params.joints[k - 1].kind != JointKind::kTowBar;
+    if (held) {  // held at its hitch by the unit in front
       p.chassis.supported = true;
       p.chassis.support_x_m = params.joints[k - 1].trailing_point_m.x();
     }
     units[k] = std::make_unique<VehicleModel>(p, step_size_s);
-    hitch_load_n = units[k]->framework().support_load_n();
+    hitch_load_n = held ? units[k]->framework().support_load_n() : 0.0;
   }
   return units;
 }
@@ -61,7 +66,15 @@ void place_units(std::vector<std::unique_ptr<VehicleModel>>& units,
   units[0]->reset(x, y, yaw_rad);
   for (std::size_t k = 0; k + 1 < units.size(); ++k) {
     // in line: the hitch point of unit k and of unit k+1 coincide in the road plane
-    const double dx = joints[k].leading_point_m.x() - joints[k].trailing_point_m.x();
+    double dx = joints[k].leading_point_m.x() - joints[k].trailing_point_m.x();
+    if (joints[k].kind == JointKind::kTowBar) {
+      // the rod points straight back; its horizontal length from the ends' design heights
+      const double dz =
+          (joints[k].leading_point_m.z() + units[k]->params().chassis.cg_height_m) -
+          (joints[k].trailing_point_m.z() + units[k + 1]->params().chassis.cg_height_m);
+      const double l = joints[k].length_m;
+      dx -= std::sqrt(std::max(l * l - dz * dz, 0.0));
+    }
     x += dx * ex.x();
     y += dx * ex.y();
     units[k + 1]->reset(x, y, yaw_rad);
@@ -94,6 +107,7 @@ Combination::Combination(const CombinationParams& params, double step_size_s)
   // warm start of the very first step: the static hitch loads (down on the leading unit)
   static_lambda_ = Eigen::VectorXd::Zero(constraint_->size());
   for (int i = 0; i < constraint_->joint_count(); ++i) {
+    if (constraint_->joint(i).params().kind == JointKind::kTowBar) continue;  // no static load
     static_lambda_(constraint_->row(i) + 2) =
         -units_[static_cast<std::size_t>(i) + 1]->framework().support_load_n();
   }
@@ -129,7 +143,20 @@ StepStatus Combination::step(Signals& signals) noexcept {
 }
 
 Vec3 Combination::joint_force_n(int i) const noexcept {
+  const Joint& j = constraint_->joint(i);
+  if (j.params().kind == JointKind::kTowBar) {
+    // -lambda u: (dg/dr_a)^T lambda at the current coordinates
+    JointEvaluation e;
+    const auto k = static_cast<std::size_t>(i);
+    j.evaluate(units_[k]->coordinates().head<6>(), units_[k + 1]->coordinates().head<6>(), e);
+    return e.dg_dya.block<1, 3>(0, 0).transpose() * stepper_->multipliers()(constraint_->row(i));
+  }
   return Joint::force_on_leading_n(stepper_->multipliers().segment(constraint_->row(i), 3));
+}
+
+double Combination::rod_force_n(int i) const noexcept {
+  if (constraint_->joint(i).params().kind != JointKind::kTowBar) return 0;
+  return Joint::rod_force_n(stepper_->multipliers()(constraint_->row(i)));
 }
 
 double Combination::joint_violation_m(int i) const noexcept {
@@ -161,6 +188,7 @@ void Combination::fill_report(ModelReport& report) const noexcept {
     const Vec3 f = joint_force_n(i);
     j.force_n = {f.x(), f.y(), f.z()};
     j.violation_m = joint_violation_m(i);
+    j.rod_force_n = rod_force_n(i);
     j.newton_iterations = stepper_->last_report().iterations;
   }
 }

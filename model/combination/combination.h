@@ -48,7 +48,8 @@ JointParams make_joint_params(JointKind kind, const vehicle::VehicleParams& lead
 std::vector<std::unique_ptr<vehicle::VehicleModel>> build_units(const CombinationParams& params,
                                                                 double step_size_s);
 
-/// Places the units in line behind unit 0 at (x, y, yaw), at rest, hitch points coinciding.
+/// Places the units in line behind unit 0 at (x, y, yaw), at rest, hitch points coinciding (tow
+/// bar: the rod straight back, at its length).
 void place_units(std::vector<std::unique_ptr<vehicle::VehicleModel>>& units,
                  const std::vector<JointParams>& joints, double x_m, double y_m, double yaw_rad);
 
@@ -82,8 +83,10 @@ class Combination final : public SteppedModel {
   [[nodiscard]] const ChainStepper::RowVector& multipliers() const noexcept {
     return stepper_->multipliers();
   }
-  /// Joint i's force on its leading unit, road frame [N].
+  /// Joint i's force on its leading unit, road frame [N] (tow bar: along the rod).
   [[nodiscard]] Vec3 joint_force_n(int i) const noexcept;
+  /// Tow bar joint i: the rod force, tension positive [N]; 0 for the other joints.
+  [[nodiscard]] double rod_force_n(int i) const noexcept;
   /// |g|_inf of joint i at the current coordinates [m].
   [[nodiscard]] double joint_violation_m(int i) const noexcept;
   /// Articulation angle (yaw of unit i minus yaw of unit i+1) [rad], wrapped to (-pi, pi].

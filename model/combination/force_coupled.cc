@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace rig::model::combination {
 
@@ -12,6 +13,10 @@ ForceCoupledCombination::ForceCoupledCombination(const CombinationParams& params
   for (const auto& u : units_) {
     sizes.push_back(u->coordinate_size());
     n_ += u->coordinate_size();
+  }
+  for (const JointParams& j : p_.joints) {
+    if (j.kind == JointKind::kTowBar)
+      throw std::invalid_argument("force-coupled baseline: the tow bar joint is not implemented");
   }
   constraint_ = std::make_unique<ChainConstraint>(p_.joints, sizes);
   m_ = constraint_->size();

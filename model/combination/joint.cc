@@ -38,6 +38,20 @@ void Joint::evaluate(const Eigen::Ref<const Eigen::VectorXd>& y_a,
   out.dg_dya.block<3, 3>(0, 3).noalias() = -(ra * skew(p_.leading_point_m)) * ea;
   out.dg_dyb.topLeftCorner<3, 3>() = -Mat3::Identity();
   out.dg_dyb.block<3, 3>(0, 3).noalias() = (rb * skew(p_.trailing_point_m)) * eb;
+  if (p_.kind == JointKind::kTowBar) {
+    // g = |d| - L with d = -(ball g) the rod from the leading to the towed end; dg/dy = -u^T
+    // d(ball g)/dy, u = d / |d| (a zero-length rod has no direction: u = 0, a degenerate setup)
+    const Vec3 d = -out.g.head<3>();
+    const double length = d.norm();
+    const Vec3 u = length > 0 ? Vec3(d / length) : Vec3::Zero();
+    out.g(0) = length - p_.length_m;
+    out.g.segment<3>(1).setZero();
+    out.dg_dya.row(0) = -u.transpose() * out.dg_dya.topRows<3>();
+    out.dg_dyb.row(0) = -u.transpose() * out.dg_dyb.topRows<3>();
+    out.dg_dya.bottomRows<3>().setZero();
+    out.dg_dyb.bottomRows<3>().setZero();
+    return;
+  }
   if (p_.kind == JointKind::kFifthWheel) {
     // Cardan (fifth wheel) row: the tractor's pitch axis stays perpendicular to the kingpin
     const Vec3 pitch_axis = ra.col(1);  // R_a e_y

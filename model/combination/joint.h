@@ -15,6 +15,15 @@
 ///   exactly what the DAE approach avoids. As a constraint it costs one more multiplier (a 4x4
 ///   Newton matrix instead of 3x3) and nothing else. The lash and roll compliance of a real
 ///   fifth wheel (a few degrees before the plate takes roll moment) are not modelled.
+/// - Tow bar (car + tow bar + car, method.md sec. 5): a rigid rod of length L pinned at a point
+///   of the leading unit and a point of the towed unit, ONE distance constraint
+///     g = |r_b + R_b p_b - r_a - R_a p_a| - L,
+///   dg/dy = -u^T dg_ball/dy with u = (r_b + R_b p_b - r_a - R_a p_a) / |...| (the unit vector
+///   from the leading to the towed end) and dg_ball/dy the ball rows above. The multiplier is
+///   the rod's axial force with the sign of compression: the force on the leading unit is
+///   -lambda u, so the rod force (tension positive) is -lambda. The rod leaves the towed unit's
+///   yaw (and its pitch and roll) free relative to the bar: it is guided by its own tires (and
+///   its steering, if steered).
 
 #include <Eigen/Core>
 
@@ -25,7 +34,7 @@ namespace rig::model::combination {
 using vehicle::Mat3;
 using vehicle::Vec3;
 
-enum class JointKind { kBall, kFifthWheel };
+enum class JointKind { kBall, kFifthWheel, kTowBar };
 
 struct JointParams {
   JointKind kind = JointKind::kBall;
@@ -33,6 +42,8 @@ struct JointParams {
   Vec3 leading_point_m = Vec3::Zero();
   /// The same point in the trailing unit's body frame [m].
   Vec3 trailing_point_m = Vec3::Zero();
+  /// Tow bar only: the rod length L between the two points [m].
+  double length_m = 0;
   /// The force-coupled baseline only (eqs. 32-38): the joint as a stiff spring-damper.
   double stiffness_npm = 5e7;
   double damping_nspm = 1.5e4;
@@ -52,8 +63,10 @@ class Joint {
  public:
   explicit Joint(const JointParams& params) : p_(params) {}
 
-  /// Number of constraint rows (3 ball, 4 fifth wheel).
-  [[nodiscard]] int size() const noexcept { return p_.kind == JointKind::kBall ? 3 : 4; }
+  /// Number of constraint rows (3 ball, 4 fifth wheel, 1 tow bar).
+  [[nodiscard]] int size() const noexcept {
+    return p_.kind == JointKind::kBall ? 3 : p_.kind == JointKind::kFifthWheel ? 4 : 1;
+  }
   [[nodiscard]] const JointParams& params() const noexcept { return p_; }
 
   /// g(y_a, y_b) and its partial derivatives at the chassis coordinates of both units. No
@@ -67,6 +80,9 @@ class Joint {
   [[nodiscard]] static Vec3 force_on_leading_n(const Eigen::Ref<const Eigen::VectorXd>& lambda) {
     return lambda.head<3>();
   }
+
+  /// Tow bar: the rod force, tension positive [N], from the joint's multiplier (see above).
+  [[nodiscard]] static double rod_force_n(double lambda) noexcept { return -lambda; }
 
  private:
   JointParams p_;

@@ -263,9 +263,10 @@ CombinationModelSettings read_combination_model(io::StrictTable& m) {
     throw m.error("joint", "needs one [[model.joint]] between each pair of units");
   for (std::size_t i = 0; i < joints.size(); ++i) {
     io::StrictTable& j = joints[i];
-    const JointKind kind = j.choice("kind", "ball", {"ball", "fifth-wheel"}) == "ball"
-                               ? JointKind::kBall
-                               : JointKind::kFifthWheel;
+    const std::string kind_name = j.choice("kind", "ball", {"ball", "fifth-wheel", "tow-bar"});
+    const JointKind kind = kind_name == "ball"          ? JointKind::kBall
+                           : kind_name == "fifth-wheel" ? JointKind::kFifthWheel
+                                                        : JointKind::kTowBar;
     const double leading_x = j.number_in("leading_x_m", -30, 30);
     const double trailing_x = j.number_in("trailing_x_m", -30, 30);
     const double height = j.number_in("height_m", 0.05, 5);
@@ -275,6 +276,7 @@ CombinationModelSettings read_combination_model(io::StrictTable& m) {
     p.kind = kind;
     p.leading_point_m = {leading_x, 0, height - a.chassis.cg_height_m};
     p.trailing_point_m = {trailing_x, 0, height - b.chassis.cg_height_m};
+    if (kind == JointKind::kTowBar) p.length_m = j.number_in("length_m", 0.1, 20);
     p.stiffness_npm = j.number_in("stiffness_npm", p.stiffness_npm, 1e3, 1e12);
     p.damping_nspm = j.number_in("damping_nspm", p.damping_nspm, 0, 1e9);
     p.roll_stiffness_nmpr = j.number_in("roll_stiffness_nmpr", p.roll_stiffness_nmpr, 1e3, 1e12);

@@ -42,7 +42,8 @@ std::unique_ptr<model::SteppedModel> make_vehicle_model(const VehicleModelSettin
 
 /// The keys of [model] kind = "combination" (config/combinations/*.toml): the units front to
 /// rear as [[model.unit]] tables (vehicle = "../vehicles/x.toml"), the joints between them as
-/// [[model.joint]] tables (kind = "ball" | "fifth-wheel", leading_x_m, trailing_x_m, height_m;
+/// [[model.joint]] tables (kind = "ball" | "fifth-wheel" | "tow-bar", leading_x_m, trailing_x_m,
+/// height_m, for a tow bar length_m;
 /// optional stiffness_npm, damping_nspm for the force-coupled baseline), `parallel`, the road
 /// keys (applied to every unit) and initial_speed_mps.
 struct CombinationModelSettings {

@@ -25,6 +25,7 @@ namespace {
 
 constexpr const char* kCarTrailer = RIG_SOURCE_DIR "/config/combinations/car-trailer.toml";
 constexpr const char* kTractorSemi = RIG_SOURCE_DIR "/config/combinations/tractor-semitrailer.toml";
+constexpr const char* kCarTowBarCar = RIG_SOURCE_DIR "/config/combinations/car-towbar-car.toml";
 
 CombinationParams load(const char* file) {
   const toml::table doc = io::load_toml_file(file);
@@ -557,6 +558,200 @@ TEST(Combination, ParallelIsBitwiseSerialAndNoStepAllocates) {
   EXPECT_EQ(report.joint_count, 1);
   EXPECT_EQ(report.units[1].wheel_count, 2);
   EXPECT_GT(std::abs(report.joints[0].force_n[2]), 100.0);
+}
+
+// ---- car + tow bar + car (method.md sec. 5): one distance constraint ----
+
+TEST(Joint, TowBarPartialDerivativesMatchFiniteDifferences) {
+  JointParams p;
+  p.kind = JointKind::kTowBar;
+  p.leading_point_m = Vec3(-2.6, 0.05, -0.1);
+  p.trailing_point_m = Vec3(2.1, -0.02, -0.1);
+  p.length_m = 1.5;
+  const Joint j(p);
+  ASSERT_EQ(j.size(), 1);
+  Eigen::VectorXd ya(6), yb(6);
+  ya << 10, 2, 0.55, 0.3, 0.02, -0.03;
+  yb << 5.2, 0.4, 0.6, 0.1, -0.015, 0.04;  // rod not along either car, not level
+  JointEvaluation e, e1;
+  j.evaluate(ya, yb, e);
+  const double eps = 1e-7;
+  double worst = 0;
+  for (int c = 0; c < 6; ++c) {
+    Eigen::VectorXd a = ya, b = yb;
+    a(c) += eps;
+    j.evaluate(a, yb, e1);
+    worst = std::max(worst, std::abs((e1.g(0) - e.g(0)) / eps - e.dg_dya(0, c)));
+    b(c) += eps;
+    j.evaluate(ya, b, e1);
+    worst = std::max(worst, std::abs((e1.g(0) - e.g(0)) / eps - e.dg_dyb(0, c)));
+  }
+  std::printf("tow bar: g = %.4f m, max |dg/dy - FD| = %.2g\n", e.g(0), worst);
+  EXPECT_LT(worst, 1e-5);
+  // g itself: |r_b + R_b p_b - r_a - R_a p_a| - L
+  JointParams ball = p;
+  ball.kind = JointKind::kBall;
+  JointEvaluation eb;
+  Joint(ball).evaluate(ya, yb, eb);
+  EXPECT_NEAR(e.g(0), eb.g.head<3>().norm() - p.length_m, 1e-14);
+}
+
+/// Straight towing with the leading car's throttle on a PI speed control at `speed`, then the
+/// leading car brakes from `brake_time`. RIG_TOW_TRACE=1 prints speeds and rod force every 0.25 s.
+struct TowRun {
+  double max_violation_m = 0;
+  int max_iterations = 0;
+  std::array<long, 12> iteration_histogram{};
+  long steps = 0;
+  bool finite = true;
+  double towing_rod_force_n = 0;  ///< mean over the last 2 s before braking
+  double towing_speed_mps = 0;    ///< the towed car's, mean over the same 2 s
+  double towing_accel_mps2 = 0;   ///< the towed car's speed change over those 2 s, per second
+  double min_rod_force_n = 0;     ///< while braking (most compressive)
+  double max_rod_force_n = 0;     ///< peak tension over the whole run
+};
+
+TowRun tow_and_brake(Combination& c, double speed_mps, double brake_time_s, double seconds) {
+  c.reset(0, 0, 0);
+  c.set_forward_speed(speed_mps);
+  Signals s = driver_inputs();
+  TowRun r;
+  double integral = 0, sum_f = 0, sum_v = 0, v_start = 0, v_end = 0;
+  long n_avg = 0;
+  const double h = c.step_size_s();
+  const long n = std::lround(seconds / h);
+  for (long k = 0; k < n; ++k) {
+    const double t = c.time_s();
+    const double v = c.unit(0).speeds()(0);
+    if (t < brake_time_s) {  // PI speed control of the leading car
+      const double e = speed_mps - v;
+      integral += e * h;
+      s[Signal::kThrottlePedal] = std::clamp(0.25 + 1.0 * e + 0.5 * integral, 0.0, 1.0);
+      s[Signal::kBrakePressureFront] = 0;
+      s[Signal::kBrakePressureRear] = 0;
+    } else {  // the leading car brakes (the towed car's brakes are off), ramp 0.3 s
+      const double ramp = std::min((t - brake_time_s) / 0.3, 1.0);
+      s[Signal::kThrottlePedal] = 0;
+      s[Signal::kBrakePressureFront] = 3e6 * ramp;
+      s[Signal::kBrakePressureRear] = 1.5e6 * ramp;
+    }
+    if (c.step(s) != StepStatus::kOk) {
+      r.finite = false;
+      return r;
+    }
+    const int it = c.last_newton().iterations;
+    r.max_iterations = std::max(r.max_iterations, it);
+    ++r.iteration_histogram[static_cast<std::size_t>(std::min(it, 11))];
+    r.max_violation_m = std::max(r.max_violation_m, c.joint_violation_m(0));
+    ++r.steps;
+    const double f = c.rod_force_n(0);
+    if (std::getenv("RIG_TOW_TRACE") != nullptr && k % 250 == 0)
+      std::printf("t %.2f v0 %.4f v1 %.4f F %.1f thr %.3f\n", c.time_s(), c.unit(0).speeds()(0),
+                  c.unit(1).speeds()(0), f, s[Signal::kThrottlePedal]);
+    if (!std::isfinite(f)) r.finite = false;
+    r.max_rod_force_n = std::max(r.max_rod_force_n, f);
+    if (c.time_s() > brake_time_s) r.min_rod_force_n = std::min(r.min_rod_force_n, f);
+    if (c.time_s() > brake_time_s - 2.0 && c.time_s() <= brake_time_s) {
+      if (n_avg == 0) v_start = c.unit(1).speeds()(0);
+      v_end = c.unit(1).speeds()(0);
+      sum_f += f;
+      sum_v += v_end;
+      ++n_avg;
+    }
+  }
+  if (n_avg > 0) {
+    r.towing_rod_force_n = sum_f / static_cast<double>(n_avg);
+    r.towing_speed_mps = sum_v / static_cast<double>(n_avg);
+    r.towing_accel_mps2 = (v_end - v_start) / (static_cast<double>(n_avg) * h);
+  }
+  return r;
+}
+
+TEST(Combination, CarTowBarCarStraightTowingThenBraking) {
+  // Straight towing at 15 m/s, then the leading car brakes. The towed car is guided by its own
+  // tires only (wheels straight, no driver): a single distance constraint leaves its yaw free,
+  // so a straight run is the meaningful case.
+  Combination c(load(kCarTowBarCar), 1e-3);
+  ASSERT_EQ(c.constraint().size(), 1);
+  const TowRun r = tow_and_brake(c, 15.0, 12.0, 15.0);
+  // the expectation from the towed car's parameters: sum of f_r F_z over its wheels (F_z = its
+  // weight: the rod is level and pinned, it carries no vertical load) + aero drag
+  const vehicle::VehicleParams& towed = c.unit(1).params();
+  double mass = towed.chassis.mass_kg, rolling = 0;
+  for (const auto& a : towed.axles) {
+    mass += 2 * a.unsprung_mass_kg;
+    rolling += 2 * a.unsprung_mass_kg * a.tire.rolling_resistance;
+  }
+  rolling += towed.chassis.mass_kg * towed.axles[0].tire.rolling_resistance;  // all tires equal
+  rolling *= towed.road.gravity_mps2;
+  const double v = r.towing_speed_mps;
+  const double drag = 0.5 * towed.chassis.air_density_kgpm3 * towed.chassis.drag_area_m2 * v * v;
+  const double expected = rolling + drag;
+  std::printf(
+      "car + tow bar + car, h = 1 ms: %ld steps, max |g| %.3g m, max Newton iterations %d "
+      "(1: %ld, 2: %ld); steady towing at %.3f m/s (towed car dv/dt %.2g m/s^2): rod force %.1f N, "
+      "expected f_r m g + drag = %.1f + %.1f = %.1f N (%+.2f %%); m a correction %.1f N; braking: "
+      "min rod force %.1f N (compression), peak tension %.1f N\n",
+      r.steps, r.max_violation_m, r.max_iterations, r.iteration_histogram[1],
+      r.iteration_histogram[2], v, r.towing_accel_mps2, r.towing_rod_force_n, rolling, drag,
+      expected, 100 * (r.towing_rod_force_n - expected) / expected, mass * r.towing_accel_mps2,
+      r.min_rod_force_n, r.max_rod_force_n);
+  EXPECT_TRUE(r.finite);
+  EXPECT_LT(r.max_violation_m, 1e-4);
+  EXPECT_LE(r.max_iterations, 2);
+  EXPECT_NEAR(v, 15.0, 0.2);
+  EXPECT_LT(std::abs(r.towing_accel_mps2), 0.005);  // constant speed: m a below 7.5 N
+  EXPECT_NEAR(r.towing_rod_force_n, expected, 0.03 * expected);
+  EXPECT_LT(r.min_rod_force_n, -1000.0);  // braking: the towed car pushes, rod in compression
+  // the joint report: the rod force and the force on the leading car along the rod
+  ModelReport report;
+  c.fill_report(report);
+  EXPECT_EQ(report.joint_count, 1);
+  EXPECT_DOUBLE_EQ(report.joints[0].rod_force_n, c.rod_force_n(0));
+  const Vec3 f = c.joint_force_n(0);
+  EXPECT_NEAR(f.norm(), std::abs(c.rod_force_n(0)), 1e-9 * (1 + f.norm()));
+}
+
+TEST(Combination, CarTowBarCarNoNaNAtOneAndTwoMilliseconds) {
+  for (const double h : {1e-3, 2e-3}) {
+    Combination c(load(kCarTowBarCar), h);
+    const TowRun r = tow_and_brake(c, 15.0, 6.0, 10.0);
+    std::printf(
+        "car + tow bar + car, h = %.0f ms: %ld steps, max |g| %.3g m, max Newton iterations %d, "
+        "towing rod force %.1f N, min %.1f N\n",
+        h * 1e3, r.steps, r.max_violation_m, r.max_iterations, r.towing_rod_force_n,
+        r.min_rod_force_n);
+    EXPECT_TRUE(r.finite);
+    EXPECT_LT(r.max_violation_m, 1e-4);
+  }
+}
+
+TEST(Combination, CarTowBarCarNoStepAllocates) {
+  Combination c(load(kCarTowBarCar), 1e-3);
+  c.set_forward_speed(15);
+  Signals s = driver_inputs();
+  const auto inputs = [](double t, Signals& sig) {
+    sig[Signal::kThrottlePedal] = t < 2 ? 0.15 : 0;
+    sig[Signal::kBrakePressureFront] = t > 2 ? 3e6 : 0;
+    sig[Signal::kBrakePressureRear] = t > 2 ? 1.5e6 : 0;
+  };
+  for (int k = 0; k < 200; ++k) {  // lazy one-time initializations outside the counter
+    inputs(c.time_s(), s);
+    ASSERT_EQ(c.step(s), StepStatus::kOk);
+  }
+  ModelReport report;
+  test::AllocationCounter counter;
+  Eigen::internal::set_is_malloc_allowed(false);
+  for (int k = 0; k < 3800; ++k) {
+    inputs(c.time_s(), s);
+    ASSERT_EQ(c.step(s), StepStatus::kOk);
+    c.fill_report(report);
+  }
+  Eigen::internal::set_is_malloc_allowed(true);
+  EXPECT_EQ(counter.count(), 0u);
+  EXPECT_EQ(report.unit_count, 2);
+  EXPECT_EQ(report.joint_count, 1);
+  EXPECT_LT(report.joints[0].violation_m, 1e-4);
 }
 
 }  // namespace
