@@ -104,8 +104,8 @@ void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg) {
   const std::int32_t joints = clamp_count(r.joint_count, model::kMaxJoints);
   const auto nj = static_cast<std::size_t>(joints);
   msg.num_joints = joints;
-  for (auto* v :
-       {&msg.joint_force_x_n, &msg.joint_force_y_n, &msg.joint_force_z_n, &msg.joint_violation_m}) {
+  for (auto* v : {&msg.joint_force_x_n, &msg.joint_force_y_n, &msg.joint_force_z_n,
+                  &msg.joint_violation_m, &msg.joint_rod_force_n}) {
     resize(*v, nj);
   }
   for (std::size_t j = 0; j < nj; ++j) {
@@ -113,6 +113,7 @@ void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg) {
     msg.joint_force_y_n[j] = r.joints[j].force_n[1];
     msg.joint_force_z_n[j] = r.joints[j].force_n[2];
     msg.joint_violation_m[j] = r.joints[j].violation_m;
+    msg.joint_rod_force_n[j] = r.joints[j].rod_force_n;
   }
 }
 

@@ -1,6 +1,7 @@
 #include "model/combination/combination.h"
 
 #include "model/combination/parallel_begin.h"
+#include "model/combination/unit_reports.h"
 
 #include <algorithm>
 #include <cmath>
@@ -173,14 +174,7 @@ double Combination::articulation_rad(int i) const noexcept {
 }
 
 void Combination::fill_report(ModelReport& report) const noexcept {
-  units_[0]->fill_report(report);
-  const int n = std::min(unit_count(), kMaxUnits);
-  ModelReport unit_report;  // on the stack, no allocation
-  for (int k = 1; k < n; ++k) {
-    units_[static_cast<std::size_t>(k)]->fill_report(unit_report);
-    report.units[static_cast<std::size_t>(k)] = unit_report.units[0];
-  }
-  report.unit_count = n;
+  fill_unit_reports(units_, report);
   report.time_s = time_s_;
   report.joint_count = std::min(constraint_->joint_count(), kMaxJoints);
   for (int i = 0; i < report.joint_count; ++i) {

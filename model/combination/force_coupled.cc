@@ -1,4 +1,5 @@
 #include "model/combination/force_coupled.h"
+#include "model/combination/unit_reports.h"
 
 #include <cmath>
 #include <numbers>
@@ -126,14 +127,7 @@ double ForceCoupledCombination::articulation_rad(int i) const noexcept {
 }
 
 void ForceCoupledCombination::fill_report(ModelReport& report) const noexcept {
-  units_[0]->fill_report(report);
-  const int n = std::min(static_cast<int>(units_.size()), kMaxUnits);
-  ModelReport unit_report;
-  for (int k = 1; k < n; ++k) {
-    units_[static_cast<std::size_t>(k)]->fill_report(unit_report);
-    report.units[static_cast<std::size_t>(k)] = unit_report.units[0];
-  }
-  report.unit_count = n;
+  fill_unit_reports(units_, report);
   report.time_s = time_s_;
   report.joint_count = std::min(constraint_->joint_count(), kMaxJoints);
   for (int i = 0; i < report.joint_count; ++i) {

@@ -71,11 +71,12 @@ constexpr std::array<ArrayColumn, 11> kWheelColumns{{
     {"brake_torque_nm", &S::wheel_brake_torque_nm},
     {"drive_torque_nm", &S::wheel_drive_torque_nm},
 }};
-constexpr std::array<ArrayColumn, 4> kJointColumns{{
+constexpr std::array<ArrayColumn, 5> kJointColumns{{
     {"force_x_n", &S::joint_force_x_n},
     {"force_y_n", &S::joint_force_y_n},
     {"force_z_n", &S::joint_force_z_n},
     {"violation_m", &S::joint_violation_m},
+    {"rod_force_n", &S::joint_rod_force_n},
 }};
 constexpr std::array<std::pair<const char*, double S::*>, 12> kScalarColumns{{
     {"steering_wheel_angle_rad", &S::steering_wheel_angle_rad},

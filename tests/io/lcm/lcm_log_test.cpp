@@ -127,8 +127,8 @@ TEST(Log2Csv, ReproducesKnownValuesAndFlattensArrays) {
   ASSERT_EQ(state.rows.size(), 300u);
   EXPECT_EQ(state.header.front(), "timestamp_us");
   // 8 leading scalars, 2 units x 15, num_wheels, 6 x (1 + 11), 12 scalars, gear, num_joints,
-  // 1 joint x 4.
-  EXPECT_EQ(state.header.size(), 8u + 30u + 1u + 72u + 12u + 2u + 4u);
+  // 1 joint x 5.
+  EXPECT_EQ(state.header.size(), 8u + 30u + 1u + 72u + 12u + 2u + 5u);
   EXPECT_EQ(state.rows[123].size(), state.header.size());
   EXPECT_EQ(state.number(123, "cycle"), 123.0);
   EXPECT_EQ(state.number(123, "sim_time_s"), 0.123);
@@ -139,6 +139,7 @@ TEST(Log2Csv, ReproducesKnownValuesAndFlattensArrays) {
   EXPECT_EQ(state.number(123, "wheel3_slip_x"), 0.003);
   EXPECT_EQ(state.number(123, "steering_wheel_angle_rad"), 0.0001 * 123.0);
   EXPECT_EQ(state.number(123, "joint0_force_x_n"), 1123.0);
+  EXPECT_EQ(state.number(123, "joint0_rod_force_n"), -623.0);
   EXPECT_EQ(state.number(123, "lateness_ns"), 123 % 97 * 1000.0);
   EXPECT_EQ(state.number(123, "timestamp_us") - state.number(0, "timestamp_us"), 123'000.0);
 

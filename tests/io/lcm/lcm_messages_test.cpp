@@ -64,6 +64,7 @@ TEST(SnapshotEncoder, StateRoundTripsEveryField) {
   EXPECT_DOUBLE_EQ(msg.brake_pressure_rr_pa, 0.6e5);
   ASSERT_EQ(msg.num_joints, 1);
   EXPECT_DOUBLE_EQ(msg.joint_force_x_n[0], 2234.0);
+  EXPECT_DOUBLE_EQ(msg.joint_rod_force_n[0], -500.0 - 1234.0);
 }
 
 TEST(SnapshotEncoder, SignalsAndStatusCarryNamesSourcesCountersAndPercentiles) {

@@ -69,6 +69,7 @@ inline io::Snapshot make_synthetic_snapshot(std::uint64_t cycle, double period_s
   r.joint_count = kSyntheticJoints;
   r.joints[0].force_n = {1000.0 + c, -20.0, 300.0};
   r.joints[0].violation_m = 1e-9;
+  r.joints[0].rod_force_n = -500.0 - c;
 
   for (std::size_t i = 0; i < model::kSignalCount; ++i) {
     s.signals.value[i] = static_cast<double>(i) + 0.001 * c;

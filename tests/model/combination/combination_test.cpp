@@ -19,6 +19,7 @@
 #include "rig/driver/path_driver.h"
 #include "rig/vehicle_config/vehicle_config.h"
 #include "tests/support/alloc_counter.h"
+#include "tests/support/driver_inputs.h"
 
 namespace rig::model::combination {
 namespace {
@@ -42,15 +43,7 @@ CombinationParams load(const char* file) {
   return p;
 }
 
-Signals driver_inputs() {
-  Signals s;
-  for (std::size_t i = 0; i < index(kFirstOutput); ++i) {
-    s.valid[i] = true;
-    s.source[i] = SignalSource::kDriver;
-  }
-  s[Signal::kGearRequest] = 99;
-  return s;
-}
+Signals driver_inputs() { return test::all_driver_inputs(); }
 
 /// Steered by the leading unit: wheelbase and steering ratio for the path driver.
 driver::PathDriverParams path_driver_for(const vehicle::VehicleParams& lead, double start_x_m,

@@ -17,6 +17,7 @@
 #include "model/vehicle/tmeasy.h"
 #include "model/vehicle/vehicle_model.h"
 #include "rig/vehicle_config/vehicle_config.h"
+#include "tests/support/driver_inputs.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -25,15 +26,7 @@ VehicleParams sedan() {
   return vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
 }
 
-Signals driver_inputs() {
-  Signals s;
-  for (std::size_t i = 0; i < index(kFirstOutput); ++i) {
-    s.valid[i] = true;
-    s.source[i] = SignalSource::kDriver;
-  }
-  s[Signal::kGearRequest] = 99;
-  return s;
-}
+Signals driver_inputs() { return test::all_driver_inputs(); }
 
 /// A McPherson-like front and multi-link-like rear: recession, scrub, camber gain, toe.
 VehicleParams sedan_with_geometry() {

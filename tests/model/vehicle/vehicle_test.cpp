@@ -20,6 +20,7 @@
 #include "rig/driver/path_driver.h"
 #include "rig/vehicle_config/vehicle_config.h"
 #include "tests/support/alloc_counter.h"
+#include "tests/support/driver_inputs.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -28,15 +29,7 @@ VehicleParams sedan() {
   return vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
 }
 
-Signals driver_inputs() {
-  Signals s;
-  for (std::size_t i = 0; i < index(kFirstOutput); ++i) {
-    s.valid[i] = true;
-    s.source[i] = SignalSource::kDriver;
-  }
-  s[Signal::kGearRequest] = 99;
-  return s;
-}
+Signals driver_inputs() { return test::all_driver_inputs(); }
 
 /// Runs for `seconds`, calling `inputs(t, signals)` before each step; fails on a NaN.
 void run(VehicleModel& m, Signals& s, double seconds,
