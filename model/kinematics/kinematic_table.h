@@ -62,7 +62,8 @@ class KinematicTable {
 
   [[nodiscard]] const Grid2D& grid() const noexcept { return grid_; }
   [[nodiscard]] double node(int k, int l) const noexcept {
-    return values_[static_cast<std::size_t>(k * grid_.u_count + l)];
+    return values_[static_cast<std::size_t>(k) * static_cast<std::size_t>(grid_.u_count) +
+                   static_cast<std::size_t>(l)];
   }
   /// Value and partials at (z, u).
   [[nodiscard]] TableValue evaluate(double z, double u, Interpolation method) const noexcept;

@@ -93,10 +93,8 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
     if (evaluation_ == ForceEvaluation::kPredictedCoordinates) y_pred_.noalias() += h * k_inv_ * z;
     const bool analytic = mode_ == JacobianMode::kAnalyticOrFiniteDifference &&
                           block_.force_jacobians(y_pred_, z, dq_dy_, dq_dz_);
-    if (mode_ == JacobianMode::kNone) {
-      block_.applied_forces(y_pred_, z, q_);  // explicit forces: dq/dy, dq/dz stay zero
-    } else if (analytic) {
-      block_.applied_forces(y_pred_, z, q_);
+    if (mode_ == JacobianMode::kNone || analytic) {
+      block_.applied_forces(y_pred_, z, q_);  // kNone: explicit forces, dq/dy, dq/dz stay zero
     } else {
       finite_difference_force_jacobians<N>(block_, y_pred_, z, dq_dy_, dq_dz_, work_y_, work_z_, q_,
                                            q1_);
@@ -141,9 +139,9 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
 
  private:
   MechanicalBlock<N>& block_;
-  JacobianMode mode_;
-  ForceEvaluation evaluation_;
-  Eigen::Index n_;
+  JacobianMode mode_ = JacobianMode::kAnalyticOrFiniteDifference;
+  ForceEvaluation evaluation_ = ForceEvaluation::kPredictedCoordinates;
+  Eigen::Index n_ = 0;
   Matrix k_inv_, m_, dq_dy_, dq_dz_, m_vi_;
   Vector y_pred_, q_, z_u_, work_y_, work_z_, q1_, q2_;
   Factorization factorization_;

@@ -65,7 +65,8 @@ inline void set_wheel_orientation(WheelBus& w, double steer_rad, double camber_r
 struct VehicleBus {
   int wheel_count = 0;
   std::array<WheelBus, kMaxWheels> wheels{};
-  std::array<double, kMaxWheels * 2> deflection_m{};  ///< x_e, y_e per wheel (tire elements)
+  std::array<double, std::size_t{kMaxWheels} * 2>
+      deflection_m{};  ///< x_e, y_e per wheel (tire elements)
   // drivetrain
   double throttle = 0;
   int gear = 0;

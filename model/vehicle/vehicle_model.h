@@ -117,7 +117,7 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   Eigen::VectorXd saved_y_, saved_z_, saved_shafts_;
   Eigen::Vector2d saved_dt_y_, saved_dt_z_, saved_st_y_, saved_st_z_;
   std::array<double, kMaxWheels> saved_spin_{};
-  std::array<double, 2 * kMaxWheels> saved_deflection_{};
+  std::array<double, 2 * std::size_t{kMaxWheels}> saved_deflection_{};
   Vec3 accel_body_ = Vec3::Zero();
   Eigen::VectorXd zero_rate_;
   StepStatus last_status_ = StepStatus::kOk;
