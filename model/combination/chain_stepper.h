@@ -5,11 +5,14 @@
 /// identity), so the Newton iteration on lambda runs on the 6 chassis coordinates of each unit
 /// with fixed-capacity matrices (no N x N products as in the generic solver::CoupledStepper):
 ///   J_j = dg/dy_j K_j^-1                         (m x 6, at y(k))
-///   mu_j = M_VIj^-1 [J_j^T; 0]                   (eq. 46, the unit's own factorization)
+///   mu_j = chassis rows of M_VIj^-1 [J_j^T; 0]   (eq. 46, the unit's own factorization;
+///                                                 = S_j^-1 J_j^T, S_j its chassis Schur
+///                                                 complement: solve_mass_leading)
 ///   y_j(lambda) = y_uj + W_j lambda,  y_uj = y_j + h K_j^-1 (z_j + h z^u_j),
 ///   W_j = h^2 K_j^-1 mu_j                        (chassis rows, eqs. 45, 50)
 ///   lambda <- lambda - [sum_j dg/dy_j W_j]^-1 g  (eqs. 47-49), warm-started,
-/// stopped on |g| and on the lambda increment as solver::ConstraintNewton (accurate forces).
+/// stopped on |g| and on the lambda increment as solver::ConstraintNewton (accurate forces);
+/// then dz_j = M_VIj^-1 [J_j^T lambda; 0], one full solve per unit.
 /// Construction allocates; step() never does.
 
 #include <array>
@@ -54,8 +57,10 @@ class ChainStepper {
   void set_params(const solver::NewtonParams& p) noexcept { params_ = p; }
 
  private:
-  /// g and the Newton matrix at y_j = y_uj + W_j lambda.
-  void evaluate(bool with_matrix) noexcept;
+  /// g and dg/dy (cache_) at y_j = y_uj + W_j lambda.
+  void evaluate() noexcept;
+  /// The Newton matrix sum_j dg/dy_j W_j from the dg/dy of the last evaluate().
+  void assemble_newton_matrix() noexcept;
 
   std::vector<solver::CouplableSystem*> units_;
   const ChainConstraint& constraint_;
@@ -65,10 +70,10 @@ class ChainStepper {
   RowVector lambda_, g_, d_lambda_;
   RowMatrix newton_matrix_;
   Eigen::PartialPivLU<RowMatrix> lu_;
-  std::vector<Eigen::MatrixXd> b_, mu_;  // per unit: n_j x m
-  std::vector<Eigen::VectorXd> dz_;      // per unit: n_j
-  std::vector<Vector6> y_u_, y_;         // chassis coordinates
-  std::vector<ChassisMatrix> w_;         // 6 x m
+  std::vector<ChassisMatrix> b_, mu_;      // per unit: J_j^T and its response, 6 x m
+  std::vector<Eigen::VectorXd> rhs_, dz_;  // per unit: [J_j^T lambda; 0] and dz_j, n_j
+  std::vector<Vector6> y_u_, y_;           // chassis coordinates
+  std::vector<ChassisMatrix> w_;           // 6 x m
   /// dg/dy of every joint at the last Newton iterate = y(k+1) of the last step, reused as the
   /// dg/dy at y(k) of the next step (one joint evaluation less per step).
   std::array<JointEvaluation, kMaxJoints> cache_{};

@@ -55,6 +55,28 @@ class ArrowheadFactorization {
     }
   }
 
+  /// x_B = body rows of A^-1 [b_B; 0], for a right-hand side that is zero on every leaf row
+  /// (e.g. forces acting on the body coordinates only). With the leaves eliminated this is
+  /// S^-1 b_B: one body_size solve with the factorized Schur complement per column instead of a
+  /// full solve, and no leaf rows are formed. b_B, x_B: body_size x any columns (must not alias).
+  template <typename Rhs, typename Dst>
+  void solve_body(const Eigen::MatrixBase<Rhs>& b_body,
+                  Eigen::MatrixBase<Dst>& x_body) const noexcept {
+    for (Eigen::Index c = 0; c < b_body.cols(); ++c) {
+      if (body6_leaves2_) {
+        // fixed-size in and out: a solve straight into a dynamic column takes Eigen's generic
+        // triangular solver, about twice the instructions
+        const Eigen::Matrix<double, 6, 1> col = b_body.col(c);
+        const Eigen::Matrix<double, 6, 1> x = schur_lu6_.solve(col);
+        x_body.col(c) = x;
+      } else {
+        body_rhs_ = b_body.col(c);
+        sol_.head(partition_.body_size) = schur_lu_.solve(body_rhs_);
+        x_body.col(c) = sol_.head(partition_.body_size);
+      }
+    }
+  }
+
  private:
   void solve_column() const noexcept;
   void compute_body6_leaves2(const Matrix& a) noexcept;

@@ -39,6 +39,12 @@ class CouplableSystem {
   /// x = M_VI^-1 b with this step's factorization (e.g. mu of eq. 46 for b = (dg/dy K^-1)^T);
   /// valid after begin_step. b and x: coordinate_size() rows, any number of columns.
   virtual void solve_mass(ConstMatrixRef b, MatrixRef x) const noexcept = 0;
+  /// x = the first r = b.rows() rows of M_VI^-1 [b; 0] (r <= coordinate_size()), for a
+  /// right-hand side that is zero below row r, e.g. constraint forces on the chassis coordinates
+  /// only. A framework with an arrowhead M_VI and r = its body size answers it with the body's
+  /// Schur complement alone (ArrowheadFactorization::solve_body); otherwise it is the full solve
+  /// restricted to those rows. Valid after begin_step. b and x: r rows, any number of columns.
+  virtual void solve_mass_leading(ConstMatrixRef b, MatrixRef x) const noexcept = 0;
   /// Phase 2, see the class comment. extra_rate: coordinate_size() entries.
   virtual void finish_step(double h, ConstVectorRef extra_rate) noexcept = 0;
 };

@@ -33,6 +33,9 @@ CouplableSystem::ConstVectorRef Engine::unconstrained_rate() const noexcept {
 void Engine::solve_mass(ConstMatrixRef b, MatrixRef x) const noexcept {
   framework_.solve_mass(b, x);
 }
+void Engine::solve_mass_leading(ConstMatrixRef b, MatrixRef x) const noexcept {
+  framework_.solve_mass_leading(b, x);
+}
 void Engine::finish_step(double h, ConstVectorRef extra_rate) noexcept {
   framework_.finish_step(h, extra_rate);
 }

@@ -36,6 +36,7 @@ class Engine final : public CouplableSystem {
   [[nodiscard]] ConstMatrixRef kinematics_inverse() const noexcept override;
   [[nodiscard]] ConstVectorRef unconstrained_rate() const noexcept override;
   void solve_mass(ConstMatrixRef b, MatrixRef x) const noexcept override;
+  void solve_mass_leading(ConstMatrixRef b, MatrixRef x) const noexcept override;
   void finish_step(double h, ConstVectorRef extra_rate) noexcept override;
 
  private:

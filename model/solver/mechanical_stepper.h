@@ -59,6 +59,8 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
         work_z_(n_),
         q1_(n_),
         q2_(n_),
+        leading_rhs_(n_),
+        leading_sol_(n_),
         factorization_(init) {
     k_inv_.setIdentity();
     m_.setZero();
@@ -72,6 +74,8 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
     work_z_.setZero();
     q1_.setZero();
     q2_.setZero();
+    leading_rhs_.setZero();
+    leading_sol_.setZero();
   }
 
   // ---- Stage ----
@@ -118,6 +122,25 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
     factorization_.solve(b, x);
   }
 
+  void solve_mass_leading(ConstMatrixRef b, MatrixRef x) const noexcept override {
+    if constexpr (requires(const Factorization& f, ConstMatrixRef& rhs, MatrixRef& dst) {
+                    f.partition();
+                    f.solve_body(rhs, dst);
+                  }) {
+      if (b.rows() == factorization_.partition().body_size) {
+        factorization_.solve_body(b, x);  // S^-1 b: the leaves' rows of the rhs are zero
+        return;
+      }
+    }
+    const Eigen::Index r = b.rows();
+    for (Eigen::Index c = 0; c < b.cols(); ++c) {
+      leading_rhs_.setZero();
+      leading_rhs_.head(r) = b.col(c);
+      factorization_.solve(leading_rhs_, leading_sol_);
+      x.col(c) = leading_sol_.head(r);
+    }
+  }
+
   void finish_step(double h, ConstVectorRef extra_rate) noexcept override {
     Vector& z = block_.speeds();
     z += h * (z_u_ + extra_rate);
@@ -144,6 +167,7 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
   Eigen::Index n_ = 0;
   Matrix k_inv_, m_, dq_dy_, dq_dz_, m_vi_;
   Vector y_pred_, q_, z_u_, work_y_, work_z_, q1_, q2_;
+  mutable Vector leading_rhs_, leading_sol_;  ///< solve_mass_leading without a body solve
   Factorization factorization_;
 };
 

@@ -284,6 +284,9 @@ solver::CouplableSystem::ConstVectorRef VehicleModel::unconstrained_rate() const
 void VehicleModel::solve_mass(ConstMatrixRef b, MatrixRef x) const noexcept {
   engine_->solve_mass(b, x);
 }
+void VehicleModel::solve_mass_leading(ConstMatrixRef b, MatrixRef x) const noexcept {
+  engine_->solve_mass_leading(b, x);
+}
 
 void VehicleModel::finish_step(double h, ConstVectorRef extra_rate) noexcept {
   engine_->finish_step(h, extra_rate);  // eq. (45)

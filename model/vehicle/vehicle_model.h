@@ -53,6 +53,8 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   [[nodiscard]] ConstMatrixRef kinematics_inverse() const noexcept override;
   [[nodiscard]] ConstVectorRef unconstrained_rate() const noexcept override;
   void solve_mass(ConstMatrixRef b, MatrixRef x) const noexcept override;
+  /// For the 6 chassis rows: S^-1 b with the Schur complement of the hub blocks.
+  void solve_mass_leading(ConstMatrixRef b, MatrixRef x) const noexcept override;
   /// z(k+1) = z(k) + h (z^u + extra_rate), y(k+1) = ... (eq. 45); then the outputs of the step
   /// are updated. On a non-finite state the step is undone (see last_status()).
   void finish_step(double h, ConstVectorRef extra_rate) noexcept override;

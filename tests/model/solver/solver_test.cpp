@@ -162,6 +162,27 @@ TEST(ArrowheadFactorization, VehiclePartitionSolvesLikeDenseLu) {
   }
 }
 
+// A right-hand side that is zero on the leaf rows: the body rows of the full solve equal S^-1 b_B
+// (solve_body), on the fixed-size vehicle path and on the general one.
+TEST(ArrowheadFactorization, BodySolveEqualsBodyRowsOfTheFullSolve) {
+  for (const ArrowheadPartition& p :
+       {ArrowheadPartition{6, {2, 2}}, ArrowheadPartition{6, {2, 2, 2}},
+        ArrowheadPartition{6, {5, 5, 4}}, ArrowheadPartition{3, {2, 2}}}) {
+    const Eigen::MatrixXd a = random_arrowhead(p, 13);
+    ArrowheadFactorization f(p);
+    f.compute(a);
+    const Eigen::Index nb = p.body_size;
+    const Eigen::MatrixXd b_body = Eigen::MatrixXd::Random(nb, 5);
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(p.total_size(), 5);
+    b.topRows(nb) = b_body;
+    Eigen::MatrixXd x(p.total_size(), 5);
+    f.solve(b, x);
+    Eigen::MatrixXd x_body(nb, 5);
+    f.solve_body(b_body, x_body);
+    EXPECT_LE((x_body - x.topRows(nb)).norm(), 1e-12 * x.topRows(nb).norm()) << nb;
+  }
+}
+
 TEST(ArrowheadFactorization, IgnoresEntriesOfTheZeroBlocks) {
   const ArrowheadPartition p{3, {2, 2}};
   Eigen::MatrixXd a = random_arrowhead(p, 11);
@@ -217,6 +238,29 @@ TEST(MechanicalStepper, ArrowheadAndDenseGiveTheSameSteps) {
   }
   EXPECT_LT((b1.y - b2.y).norm(), 1e-12);
   EXPECT_GT(b1.y.norm(), 1e-6);  // it moved
+}
+
+// solve_mass_leading: the Schur shortcut (rows = body size) and the full solve restricted to the
+// leading rows (other row counts, dense factorization) give the leading rows of solve_mass.
+TEST(MechanicalStepper, SolveMassLeadingEqualsLeadingRowsOfTheFullSolve) {
+  ArrowBlock b1, b2;
+  MechanicalStepper<Eigen::Dynamic> dense(b1);
+  MechanicalStepper<Eigen::Dynamic, ArrowheadFactorization> arrow(b2,
+                                                                  ArrowheadPartition{3, {2, 2}});
+  dense.begin_step(1e-3);
+  arrow.begin_step(1e-3);
+  for (const Eigen::Index r : {Eigen::Index{3}, Eigen::Index{2}, Eigen::Index{5}}) {
+    const Eigen::MatrixXd b_lead = Eigen::MatrixXd::Random(r, 4);
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(7, 4);
+    b.topRows(r) = b_lead;
+    for (const CouplableSystem* s : {static_cast<const CouplableSystem*>(&dense),
+                                     static_cast<const CouplableSystem*>(&arrow)}) {
+      Eigen::MatrixXd x(7, 4), x_lead(r, 4);
+      s->solve_mass(b, x);
+      s->solve_mass_leading(b_lead, x_lead);
+      EXPECT_LE((x_lead - x.topRows(r)).norm(), 1e-12 * x.topRows(r).norm()) << r;
+    }
+  }
 }
 
 // ---- finite differences vs analytic Jacobians of the paper blocks ----
@@ -391,15 +435,19 @@ TEST(NoAllocation, SolverStepsAllocateNothing) {
   DynamicElement dyn_element;
   ForceElementStepper<Eigen::Dynamic> dyn_stepper(dyn_element);
   ForceElementStepper<Eigen::Dynamic> dyn_stepper_fd(dyn_element, JacobianMode::kFiniteDifference);
+  const Eigen::MatrixXd b_lead = Eigen::MatrixXd::Ones(3, 2);
+  Eigen::MatrixXd x_lead(3, 2);
   const test::AllocationCounter counter;
   Eigen::internal::set_is_malloc_allowed(false);
   for (int i = 0; i < 2000; ++i) {
     dense.advance(1e-3);
+    dense.solve_mass_leading(b_lead, x_lead);  // full solve, leading rows
     dyn_stepper.advance(1e-3);
     dyn_stepper_fd.advance(1e-3);
     pendulums.step(1e-3);
     car.step(1e-3, examples::paper_maneuver_inputs(i * 1e-3 * 10));
     arrow.advance(1e-3);
+    arrow.solve_mass_leading(b_lead, x_lead);  // Schur shortcut
     engine.step(1e-3);
   }
   Eigen::internal::set_is_malloc_allowed(true);
