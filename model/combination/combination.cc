@@ -82,15 +82,6 @@ void place_units(std::vector<std::unique_ptr<VehicleModel>>& units,
   }
 }
 
-namespace {
-
-double wrap_angle(double a) noexcept {
-  a = std::remainder(a, 2 * std::numbers::pi);
-  return a;
-}
-
-}  // namespace
-
 Combination::Combination(const CombinationParams& params, double step_size_s)
     : p_(params), h_(step_size_s), units_(build_units(params, step_size_s)) {
   std::vector<Eigen::Index> sizes;
@@ -161,16 +152,13 @@ double Combination::rod_force_n(int i) const noexcept {
 }
 
 double Combination::joint_violation_m(int i) const noexcept {
-  JointEvaluation e;
-  const Joint& j = constraint_->joint(i);
   const auto k = static_cast<std::size_t>(i);
-  j.evaluate(units_[k]->coordinates().head<6>(), units_[k + 1]->coordinates().head<6>(), e);
-  return e.g.head(j.size()).lpNorm<Eigen::Infinity>();
+  return combination::joint_violation_m(constraint_->joint(i), *units_[k], *units_[k + 1]);
 }
 
 double Combination::articulation_rad(int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  return wrap_angle(units_[k]->coordinates()(3) - units_[k + 1]->coordinates()(3));
+  return combination::articulation_rad(*units_[k], *units_[k + 1]);
 }
 
 void Combination::fill_report(ModelReport& report) const noexcept {

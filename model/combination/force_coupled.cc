@@ -113,17 +113,13 @@ StepStatus ForceCoupledCombination::step(Signals& signals) noexcept {
 }
 
 double ForceCoupledCombination::joint_violation_m(int i) const noexcept {
-  JointEvaluation e;
-  const Joint& j = constraint_->joint(i);
   const auto k = static_cast<std::size_t>(i);
-  j.evaluate(units_[k]->coordinates().head<6>(), units_[k + 1]->coordinates().head<6>(), e);
-  return e.g.head(j.size()).lpNorm<Eigen::Infinity>();
+  return combination::joint_violation_m(constraint_->joint(i), *units_[k], *units_[k + 1]);
 }
 
 double ForceCoupledCombination::articulation_rad(int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  return std::remainder(units_[k]->coordinates()(3) - units_[k + 1]->coordinates()(3),
-                        2 * std::numbers::pi);
+  return combination::articulation_rad(*units_[k], *units_[k + 1]);
 }
 
 void ForceCoupledCombination::fill_report(ModelReport& report) const noexcept {

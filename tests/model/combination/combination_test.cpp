@@ -74,18 +74,27 @@ struct DriftStats {
   bool finite = true;
 };
 
+/// The path driver of the lane-change-and-brake runs: ISO 3888-1 from x = 30 m at `speed_mps`,
+/// then the brakes ramped in 0.2 s to the given pressures from `brake_time_s`.
+driver::PathDriverParams lane_change_then_brake(const vehicle::VehicleParams& lead,
+                                                double speed_mps, double brake_time_s,
+                                                double front_pa, double rear_pa) {
+  driver::PathDriverParams dp = path_driver_for(lead, 30.0, speed_mps);
+  dp.stop_time_s = brake_time_s;
+  dp.stop_brake_pressure_front_pa = front_pa;
+  dp.stop_brake_pressure_rear_pa = rear_pa;
+  dp.stop_brake_ramp_s = 0.2;
+  return dp;
+}
+
 /// Double lane change at `speed`, then hard braking (ramped to `brake_pa` on both circuits from
 /// `brake_time`), on the combination; records |g| and Newton iterations every step.
 DriftStats lane_change_and_brake(Combination& c, double speed_mps, double brake_time_s,
                                  double brake_front_pa, double brake_rear_pa, double seconds) {
   c.reset(0, 0, 0);
   c.set_forward_speed(speed_mps);
-  driver::PathDriverParams dp = path_driver_for(c.unit(0).params(), 30.0, speed_mps);
-  dp.stop_time_s = brake_time_s;
-  dp.stop_brake_pressure_front_pa = brake_front_pa;
-  dp.stop_brake_pressure_rear_pa = brake_rear_pa;
-  dp.stop_brake_ramp_s = 0.2;
-  driver::PathDriver d(dp);
+  driver::PathDriver d(lane_change_then_brake(c.unit(0).params(), speed_mps, brake_time_s,
+                                              brake_front_pa, brake_rear_pa));
   Signals s = driver_inputs();
   DriftStats st;
   const long n = std::lround(seconds / c.step_size_s());
@@ -232,12 +241,8 @@ std::vector<Sample> force_history(Model& m, double speed_mps, double seconds, lo
                                   double brake_time_s, double front_pa, double rear_pa) {
   m.reset(0, 0, 0);
   m.set_forward_speed(speed_mps);
-  driver::PathDriverParams dp = path_driver_for(m.unit(0).params(), 30.0, speed_mps);
-  dp.stop_time_s = brake_time_s;
-  dp.stop_brake_pressure_front_pa = front_pa;
-  dp.stop_brake_pressure_rear_pa = rear_pa;
-  dp.stop_brake_ramp_s = 0.2;
-  driver::PathDriver d(dp);
+  driver::PathDriver d(
+      lane_change_then_brake(m.unit(0).params(), speed_mps, brake_time_s, front_pa, rear_pa));
   Signals s = driver_inputs();
   std::vector<Sample> out;
   const long n = std::lround(seconds / m.step_size_s());
