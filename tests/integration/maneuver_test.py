@@ -2,7 +2,8 @@
 """Runs one maneuver file offline through `rig run` and checks physical results from the LCM log.
 
 Usage: maneuver_test.py RIG_BINARY LOG2CSV_BINARY SOURCE_DIR NAME
-NAME is a file of config/maneuvers/ without .toml, or "rig" for config/rig.toml (the demo).
+NAME is a file of config/maneuvers/ without .toml, "rig" for config/rig.toml (the demo), or
+"combination-FILE" for config/combinations/FILE.toml.
 
 Each run: `rig check` passes, `rig run --offline --lcm-url none --lcm-log F` exits 0 with stop
 reason "duration" (a NaN stops the run with exit 1), every logged state is finite; then
@@ -20,7 +21,7 @@ import sys
 import tempfile
 
 RIG, LOG2CSV, SRC, NAME = sys.argv[1:5]
-COLUMNS = ("sim_time_s", "unit0_", "wheel0_", "steering_", "gear")
+COLUMNS = ("sim_time_s", "unit0_", "unit1_", "wheel0_", "steering_", "gear", "num_", "joint0_")
 TMP = tempfile.mkdtemp(prefix=f"rig_maneuver_{NAME}_")
 
 
@@ -38,6 +39,8 @@ def check(cond, msg):
 def config_path(name):
     if name == "rig":
         return os.path.join(SRC, "config", "rig.toml")
+    if name.startswith("combination-"):
+        return os.path.join(SRC, "config", "combinations", name[len("combination-"):] + ".toml")
     return os.path.join(SRC, "config", "maneuvers", name + ".toml")
 
 
@@ -184,8 +187,56 @@ def case_paper_quarter_car(s, rows):
     check(at(rows, 20.0)["unit0_vx_mps"] < -0.5, "released at 18 s: rolls back")
 
 
+def check_joint(rows, units=2):
+    """Every logged step: the units are there and the joint holds (issue 7: |g| < 0.1 mm)."""
+    check(all(r["num_units"] == units for r in rows), f"{units} units in every state")
+    worst = max(r["joint0_violation_m"] for r in rows)
+    check(worst < 1e-4, f"joint violation max {worst:.3g} m < 0.1 mm at every step")
+
+
+def articulation_deg(r):
+    d = r["unit0_yaw_rad"] - r["unit1_yaw_rad"]
+    return math.degrees(math.remainder(d, 2 * math.pi))
+
+
+def case_combination_car_trailer(s, rows):
+    check_joint(rows)
+    check_dlc(rows, 30.0, 16.67)
+    peak = max(abs(articulation_deg(r)) for r in rows)
+    check(2.0 < peak < 30.0, f"articulation through the lane change peaks at {peak:.1f} deg")
+    check(speed(rows[-1]) < 0.05, "braked to stand-still")
+    # Hitch force on the car (road x): the car pulls the trailer at 60 km/h (rolling resistance and
+    # drag, a few hundred N backwards); while braking the trailer pushes (kN forwards).
+    pull = at(rows, 10.0)["joint0_force_x_n"]
+    check(-1000.0 < pull < -100.0, f"towing at 60 km/h: hitch force {pull:.0f} N (pulls back)")
+    push = at(rows, 12.0)["joint0_force_x_n"]
+    check(push > 1000.0, f"braking: hitch force {push:.0f} N (trailer pushes)")
+
+
+def case_combination_tractor_semitrailer(s, rows):
+    check_joint(rows)
+    peak = max(abs(articulation_deg(r)) for r in rows)
+    check(2.0 < peak < 30.0, f"articulation through the lane change peaks at {peak:.1f} deg")
+    check(speed(rows[-1]) < 0.05, "braked to stand-still")
+    kingpin = -at(rows, 1.0)["joint0_force_z_n"]
+    check(80e3 < abs(kingpin) < 140e3, f"kingpin load {abs(kingpin) / 1e3:.1f} kN (static 110.5)")
+
+
+def case_combination_car_trailer_split_mu(s, rows):
+    check_joint(rows)
+    peak = max(abs(articulation_deg(r)) for r in rows)
+    check(peak > 20.0, f"split-mu braking without ABS: jackknife tendency, {peak:.0f} deg")
+
+
+def case_combination_car_towbar_car(s, rows):
+    check_joint(rows)
+    towing = [r["joint0_rod_force_n"] for r in rows if r["sim_time_s"] < 1.0]
+    check(min(r["joint0_rod_force_n"] for r in rows) < -1000.0, "rod in compression while braking")
+    check(max(towing) > 50.0, f"rod in tension while towing ({max(towing):.0f} N)")
+
+
 summary, states = run_offline(config_path(NAME))
-case = globals().get("case_" + NAME.replace("-", "_"))
+case = globals().get("case_" + NAME.replace("-", "_"))  # combination-x-y: case_combination_x_y
 if case is None:
     fail(f"no physical check for {NAME}: add case_{NAME.replace('-', '_')} to {__file__}")
 case(summary, states)
