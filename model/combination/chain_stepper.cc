@@ -2,13 +2,11 @@
 
 #include <stdexcept>
 
-#include "model/combination/parallel_begin.h"
-
 namespace rig::model::combination {
 
 ChainStepper::ChainStepper(std::vector<solver::CouplableSystem*> units,
                            const ChainConstraint& constraint, solver::NewtonParams params,
-                           ParallelBegin* parallel)
+                           BeginStepRunner* parallel)
     : units_(std::move(units)),
       constraint_(constraint),
       params_(params),

@@ -21,14 +21,13 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 
+#include "model/combination/begin_step_runner.h"
 #include "model/combination/chain_constraint.h"
 #include "model/report.h"
 #include "model/solver/constraint_coupling.h"
 #include "model/solver/couplable_system.h"
 
 namespace rig::model::combination {
-
-class ParallelBegin;
 
 class ChainStepper {
  public:
@@ -42,7 +41,7 @@ class ChainStepper {
   /// units in chain order (not owned); parallel (optional, not owned) runs begin_step of units
   /// 1..N-1 while the caller runs unit 0.
   ChainStepper(std::vector<solver::CouplableSystem*> units, const ChainConstraint& constraint,
-               solver::NewtonParams params, ParallelBegin* parallel = nullptr);
+               solver::NewtonParams params, BeginStepRunner* parallel = nullptr);
 
   /// Advances every unit by h with the joints closed at t + h.
   solver::NewtonReport step(double h) noexcept;
@@ -65,7 +64,7 @@ class ChainStepper {
   std::vector<solver::CouplableSystem*> units_;
   const ChainConstraint& constraint_;
   solver::NewtonParams params_;
-  ParallelBegin* parallel_;
+  BeginStepRunner* parallel_;
   Eigen::Index m_;
   RowVector lambda_, g_, d_lambda_;
   RowMatrix newton_matrix_;

@@ -1,6 +1,5 @@
 #include "model/combination/combination.h"
 
-#include "model/combination/parallel_begin.h"
 #include "model/combination/unit_reports.h"
 
 #include <algorithm>
@@ -90,7 +89,11 @@ Combination::Combination(const CombinationParams& params, double step_size_s)
   std::vector<solver::CouplableSystem*> systems;
   for (auto& u : units_) systems.push_back(u.get());
   if (p_.parallel) {
-    parallel_ = std::make_unique<ParallelBegin>(
+    if (!p_.begin_step_runner) {
+      throw std::invalid_argument("combination " + p_.name +
+                                  ": parallel = true needs a begin_step_runner");
+    }
+    parallel_ = p_.begin_step_runner(
         std::vector<solver::CouplableSystem*>(systems.begin() + 1, systems.end()));
   }
   stepper_ =

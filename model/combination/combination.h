@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "model/combination/begin_step_runner.h"
 #include "model/combination/chain_constraint.h"
 #include "model/combination/chain_stepper.h"
 #include "model/combination/joint.h"
@@ -33,8 +34,10 @@ struct CombinationParams {
   /// joints[i] couples units[i] and units[i+1].
   std::vector<JointParams> joints;
   solver::NewtonParams newton = default_combination_newton_params();
-  /// Run begin_step of units 1..N-1 on a worker thread while unit 0 runs on the caller's.
+  /// Run begin_step of units 1..N-1 with begin_step_runner while unit 0 runs on the caller's
+  /// thread; parallel = true needs a runner (the rig's: make_thread_begin_step_runner).
   bool parallel = false;
+  BeginStepRunnerFactory begin_step_runner;
 };
 
 /// A joint at a point `height_m` above the ground in the design position, `leading_x_m` from
@@ -52,8 +55,6 @@ std::vector<std::unique_ptr<vehicle::VehicleModel>> build_units(const Combinatio
 /// bar: the rod straight back, at its length).
 void place_units(std::vector<std::unique_ptr<vehicle::VehicleModel>>& units,
                  const std::vector<JointParams>& joints, double x_m, double y_m, double yaw_rad);
-
-class ParallelBegin;
 
 class Combination final : public SteppedModel {
  public:
@@ -98,7 +99,7 @@ class Combination final : public SteppedModel {
   double h_;
   double time_s_ = 0;
   std::vector<std::unique_ptr<vehicle::VehicleModel>> units_;
-  std::unique_ptr<ParallelBegin> parallel_;
+  std::unique_ptr<BeginStepRunner> parallel_;
   std::unique_ptr<ChainConstraint> constraint_;
   std::unique_ptr<ChainStepper> stepper_;
   Eigen::VectorXd saved_lambda_, static_lambda_;

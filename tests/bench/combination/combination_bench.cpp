@@ -9,6 +9,7 @@
 #include "io/config/strict_table.h"
 #include "model/combination/combination.h"
 #include "model/combination/force_coupled.h"
+#include "rig/vehicle_config/thread_begin_step_runner.h"
 #include "rig/vehicle_config/vehicle_config.h"
 
 namespace {
@@ -32,6 +33,7 @@ CombinationParams load(const char* file, bool parallel) {
   p.units = s.units;
   p.joints = s.joints;
   p.parallel = parallel;
+  p.begin_step_runner = rig::vehicle_config::make_thread_begin_step_runner;
   p.newton = rig::model::combination::default_combination_newton_params();
   return p;
 }

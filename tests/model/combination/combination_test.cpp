@@ -17,6 +17,7 @@
 #include "model/combination/combination.h"
 #include "model/combination/force_coupled.h"
 #include "rig/driver/path_driver.h"
+#include "rig/vehicle_config/thread_begin_step_runner.h"
 #include "rig/vehicle_config/vehicle_config.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
@@ -508,6 +509,7 @@ TEST(Combination, ParallelIsBitwiseSerialAndNoStepAllocates) {
   CombinationParams p = load(kCarTrailer);
   Combination serial(p, 1e-3);
   p.parallel = true;
+  p.begin_step_runner = vehicle_config::make_thread_begin_step_runner;
   Combination parallel(p, 1e-3);
   p.parallel = false;
   ForceCoupledCombination spring(p, 1e-3);

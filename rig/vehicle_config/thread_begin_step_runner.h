@@ -1,29 +1,35 @@
 #pragma once
 /// @file
-/// The parallel option of the coupled step (issue 7): begin_step of units 1..N-1 on one worker
-/// thread while the caller runs unit 0.
+/// The rig's BeginStepRunner for the parallel option of the coupled step (issue 7): one worker
+/// thread that takes over the scheduling policy and priority of the thread that first calls
+/// start() (the SCHED_FIFO loop thread), so that the loop never waits on a normal-priority thread.
+
+#include <pthread.h>
+#include <sched.h>
 
 #include <atomic>
 #include <condition_variable>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <utility>
 #include <vector>
 
+#include "model/combination/begin_step_runner.h"
 #include "model/solver/couplable_system.h"
 
-namespace rig::model::combination {
+namespace rig::vehicle_config {
 
 /// Runs begin_step of units 1..N-1 on one worker thread while the caller runs unit 0 (the
 /// option of issue 7). Hand-over: both sides spin briefly on atomics, then sleep on a condition
 /// variable; the counters are changed under the mutex, so no wake-up is lost. (std::atomic::wait
 /// / notify of libstdc++ 12 deadlocked here after a few thousand hand-overs.) Nothing allocates
 /// after construction.
-class ParallelBegin {
+class ThreadBeginStepRunner final : public model::combination::BeginStepRunner {
  public:
-  explicit ParallelBegin(std::vector<solver::CouplableSystem*> units)
+  explicit ThreadBeginStepRunner(std::vector<model::solver::CouplableSystem*> units)
       : units_(std::move(units)), worker_([this] { run(); }) {}
-  ~ParallelBegin() {
+  ~ThreadBeginStepRunner() override {
     {
       const std::lock_guard<std::mutex> lock(mutex_);
       stop_ = true;
@@ -32,11 +38,13 @@ class ParallelBegin {
     work_cv_.notify_one();
     worker_.join();
   }
-  ParallelBegin(const ParallelBegin&) = delete;
-  ParallelBegin& operator=(const ParallelBegin&) = delete;
 
   /// Starts begin_step(h) of the worker's units.
-  void start(double h) noexcept {
+  void start(double h) noexcept override {
+    if (!sched_taken_) {  // the caller's policy and priority, handed to the worker once
+      sched_taken_ = true;
+      (void)pthread_getschedparam(pthread_self(), &policy_, &sched_);
+    }
     h_ = h;
     {
       const std::lock_guard<std::mutex> lock(mutex_);
@@ -45,7 +53,7 @@ class ParallelBegin {
     work_cv_.notify_one();
   }
   /// Returns when the worker's units have finished their begin_step.
-  void wait() noexcept {
+  void wait() noexcept override {
     for (int spin = 0; spin < kSpins; ++spin) {
       if (done_.load(std::memory_order_acquire) == target_) return;
     }
@@ -58,6 +66,7 @@ class ParallelBegin {
 
   void run() noexcept {
     unsigned seen = 0;
+    bool sched_applied = false;
     for (;;) {
       unsigned e = epoch_.load(std::memory_order_acquire);
       for (int spin = 0; e == seen && spin < kSpins; ++spin)
@@ -72,7 +81,12 @@ class ParallelBegin {
         const std::lock_guard<std::mutex> lock(mutex_);
         if (stop_) return;
       }
-      for (solver::CouplableSystem* u : units_) u->begin_step(h_);
+      if (!sched_applied) {  // start() wrote policy_/sched_ before the epoch it published
+        sched_applied = true;
+        // Refused without privilege: then both threads have the default policy anyway.
+        (void)pthread_setschedparam(pthread_self(), policy_, &sched_);
+      }
+      for (model::solver::CouplableSystem* u : units_) u->begin_step(h_);
       {
         const std::lock_guard<std::mutex> lock(mutex_);
         done_.store(e, std::memory_order_release);
@@ -81,8 +95,11 @@ class ParallelBegin {
     }
   }
 
-  std::vector<solver::CouplableSystem*> units_;
+  std::vector<model::solver::CouplableSystem*> units_;
   double h_ = 0;
+  bool sched_taken_ = false;
+  int policy_ = SCHED_OTHER;
+  sched_param sched_{};
   unsigned target_ = 0;
   bool stop_ = false;
   alignas(64) std::atomic<unsigned> epoch_{0};
@@ -92,4 +109,10 @@ class ParallelBegin {
   std::thread worker_;
 };
 
-}  // namespace rig::model::combination
+/// The factory for CombinationParams::begin_step_runner.
+inline std::unique_ptr<model::combination::BeginStepRunner> make_thread_begin_step_runner(
+    std::vector<model::solver::CouplableSystem*> units) {
+  return std::make_unique<ThreadBeginStepRunner>(std::move(units));
+}
+
+}  // namespace rig::vehicle_config
