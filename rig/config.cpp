@@ -10,7 +10,7 @@
 namespace rig {
 namespace {
 
-RigSettings read_rig(io::StrictTable& t) {
+RigSettings read_rig(io::config::StrictTable& t) {
   RigSettings s;
   if (t.has("period_s") && t.has("step_s"))
     throw t.error("step_s", "give period_s or step_s, not both");
@@ -34,16 +34,16 @@ RigSettings read_rig(io::StrictTable& t) {
   return s;
 }
 
-ModelSettings read_model(io::StrictTable& t) {
+ModelSettings read_model(io::config::StrictTable& t) {
   ModelSettings m;
   m.kind = t.choice("kind", "quarter-car", {"quarter-car", "vehicle", "combination"});
   if (m.kind == "vehicle") {  // vehicle file + road keys (rig/vehicle_config)
-    m.vehicle = vehicle_config::read_vehicle_model(t);
+    m.vehicle = io::config::read_vehicle_model(t);
     t.finish();
     return m;
   }
   if (m.kind == "combination") {  // units, joints, road keys (rig/vehicle_config)
-    m.combination = vehicle_config::read_combination_model(t);
+    m.combination = io::config::read_combination_model(t);
     t.finish();
     return m;
   }
@@ -89,7 +89,7 @@ void route_path_driver(RigConfig& c) {
   }
 }
 
-void read_routing(io::StrictTable& t, RigConfig& c) {
+void read_routing(io::config::StrictTable& t, RigConfig& c) {
   for (auto&& [key, node] : t.raw()) {
     const std::string name(key.str());
     const auto sig = model::signal_by_name(name);
@@ -118,8 +118,8 @@ std::string policy_name(OverrunPolicy policy, int abort_after) {
 }
 
 RigConfig load_config(const std::filesystem::path& file) {
-  const toml::table doc = io::load_toml_file(file);
-  io::StrictTable top(doc, file, "top level");
+  const toml::table doc = io::config::load_toml_file(file);
+  io::config::StrictTable top(doc, file, "top level");
   RigConfig c;
   c.file = file;
   c.routing.fill(model::SignalSource::kModel);
@@ -143,8 +143,8 @@ RigConfig load_config(const std::filesystem::path& file) {
       }
     }
   }
-  if (auto t = top.optional_table("can")) c.can = io::can::read_can_settings(*t);
-  if (auto t = top.optional_table("lcm")) c.lcm = io::read_lcm_settings(*t);
+  if (auto t = top.optional_table("can")) c.can = io::can::bridge::read_can_settings(*t);
+  if (auto t = top.optional_table("lcm")) c.lcm = io::lcm::read_lcm_settings(*t);
   top.finish();  // unknown top-level sections
   return c;
 }

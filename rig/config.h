@@ -10,12 +10,13 @@
 #include <string>
 
 #include "io/can/bridge/can_settings.h"
+#include "io/config/combination_file.h"
+#include "io/config/vehicle_file.h"
 #include "io/lcm/lcm_settings.h"
-#include "model/examples/quarter_car/quarter_car_params.h"
+#include "model/paper/quarter_car_params.h"
 #include "model/signals.h"
 #include "rig/driver/path_driver.h"
 #include "rig/driver/table_driver.h"
-#include "rig/vehicle_config/vehicle_config.h"
 
 namespace rig {
 
@@ -35,9 +36,9 @@ struct RigSettings {
 /// [model]
 struct ModelSettings {
   std::string kind = "quarter-car";
-  model::examples::QuarterCarParams quarter_car{};
-  std::optional<vehicle_config::VehicleModelSettings> vehicle;  ///< kind = "vehicle"
-  std::optional<vehicle_config::CombinationModelSettings> combination;  ///< kind = "combination"
+  model::paper::QuarterCarParams quarter_car{};
+  std::optional<io::config::VehicleModelSettings> vehicle;          ///< kind = "vehicle"
+  std::optional<io::config::CombinationModelSettings> combination;  ///< kind = "combination"
 };
 
 struct RigConfig {
@@ -48,8 +49,8 @@ struct RigConfig {
   std::optional<driver::PathDriverParams> path_driver;  ///< [driver] kind = "path"
   /// Source of each input signal ([routing]); kDriver for inputs the driver table has.
   std::array<model::SignalSource, model::kSignalCount> routing{};
-  io::LcmSettings lcm;                      ///< [lcm] (optional): URL, channel prefix, rates
-  std::optional<io::can::CanSettings> can;  ///< [can], read by io/can's read_can_settings
+  io::lcm::LcmSettings lcm;  ///< [lcm] (optional): URL, channel prefix, rates
+  std::optional<io::can::bridge::CanSettings> can;  ///< [can], read by io/can's read_can_settings
 };
 
 /// Loads and validates a configuration file. Throws ConfigError("file:line: ...").

@@ -45,7 +45,7 @@ const char* stop_reason_name(StopReason reason) {
 
 Executive::Executive(const ExecutiveParams& params, Clock& clock, model::SteppedModel& model,
                      driver::Driver* driver, std::vector<io::CycleIo*> io,
-                     std::vector<io::SnapshotSink*> sinks, io::EventLog& log,
+                     std::vector<io::SnapshotSink*> sinks, io::log::EventLog& log,
                      const std::array<model::SignalSource, model::kSignalCount>& routing)
     : params_(params),
       clock_(clock),

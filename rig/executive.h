@@ -55,7 +55,7 @@ class Executive {
   /// of the input signals. Allocates everything here.
   Executive(const ExecutiveParams& params, Clock& clock, model::SteppedModel& model,
             driver::Driver* driver, std::vector<io::CycleIo*> io,
-            std::vector<io::SnapshotSink*> sinks, io::EventLog& log,
+            std::vector<io::SnapshotSink*> sinks, io::log::EventLog& log,
             const std::array<model::SignalSource, model::kSignalCount>& routing);
   ~Executive();
   Executive(const Executive&) = delete;
@@ -123,7 +123,7 @@ class Executive {
   driver::Driver* driver_;
   std::vector<io::CycleIo*> io_;
   std::vector<io::SnapshotSink*> sinks_;
-  io::EventLog& log_;
+  io::log::EventLog& log_;
   CycleHook* hook_ = nullptr;
 
   model::Signals signals_{};

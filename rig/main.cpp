@@ -21,7 +21,7 @@ int check(const std::string& file) {
     options.config_file = file;
     try {
       (void)rig::make_io(config, options);  // loads DBC and mapping files, opens CAN
-    } catch (const rig::io::ConfigError&) {
+    } catch (const rig::io::config::ConfigError&) {
       throw;
     } catch (const std::exception& e) {
       std::cout << "note: " << e.what()
@@ -29,7 +29,7 @@ int check(const std::string& file) {
     }
     std::cout << file << ": OK\n";
     return 0;
-  } catch (const rig::io::ConfigError& e) {
+  } catch (const rig::io::config::ConfigError& e) {
     std::cerr << e.what() << "\n";
     return 2;
   }

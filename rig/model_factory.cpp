@@ -1,21 +1,50 @@
 #include "rig/model_factory.h"
 
-#include "model/examples/quarter_car/quarter_car_model.h"
+#include "model/combination/combination.h"
+#include "model/paper/quarter_car_model.h"
+#include "model/vehicle/vehicle_model.h"
 #include "rig/driver/path_driver.h"
 #include "rig/driver/table_driver.h"
+#include "rig/thread_begin_step_runner.h"
 
 namespace rig {
+namespace {
+
+/// A VehicleModel at step h, at rest or at the initial speed.
+std::unique_ptr<model::SteppedModel> make_vehicle_model(
+    const io::config::VehicleModelSettings& settings, double step_s) {
+  auto m = std::make_unique<model::vehicle::VehicleModel>(settings.params, step_s);
+  if (settings.initial_speed_mps != 0) m->set_forward_speed(settings.initial_speed_mps);
+  return m;
+}
+
+/// A model::combination::Combination; its parallel option runs on the rig's worker thread.
+std::unique_ptr<model::SteppedModel> make_combination_model(
+    const io::config::CombinationModelSettings& settings, double step_s) {
+  model::combination::CombinationParams p;
+  p.name = settings.name;
+  p.units = settings.units;
+  p.joints = settings.joints;
+  p.parallel = settings.parallel;
+  p.begin_step_runner = make_thread_begin_step_runner;
+  p.newton = model::combination::default_combination_newton_params();
+  auto m = std::make_unique<model::combination::Combination>(p, step_s);
+  if (settings.initial_speed_mps != 0) m->set_forward_speed(settings.initial_speed_mps);
+  return m;
+}
+
+}  // namespace
 
 std::unique_ptr<model::SteppedModel> make_model(const RigConfig& config) {
   if (config.model.kind == "vehicle") {
-    return vehicle_config::make_vehicle_model(*config.model.vehicle, config.rig.period_s);
+    return make_vehicle_model(*config.model.vehicle, config.rig.period_s);
   }
   if (config.model.kind == "combination") {
-    return vehicle_config::make_combination_model(*config.model.combination, config.rig.period_s);
+    return make_combination_model(*config.model.combination, config.rig.period_s);
   }
   // kind is validated at load time; the rest is "quarter-car".
-  return std::make_unique<model::examples::QuarterCarModel>(config.model.quarter_car,
-                                                            config.rig.period_s);
+  return std::make_unique<model::paper::QuarterCarModel>(config.model.quarter_car,
+                                                         config.rig.period_s);
 }
 
 std::unique_ptr<driver::Driver> make_driver(const RigConfig& config) {

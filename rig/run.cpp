@@ -75,7 +75,7 @@ int run(const RunOptions& options) {
     sinks_owned = make_sinks(config, options);
     model = make_model(config);
     driver = make_driver(config);
-  } catch (const io::ConfigError& e) {
+  } catch (const io::config::ConfigError& e) {
     std::cerr << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {
@@ -83,9 +83,9 @@ int run(const RunOptions& options) {
     return 1;
   }
 
-  std::unique_ptr<io::EventLog> log;
+  std::unique_ptr<io::log::EventLog> log;
   try {
-    log = std::make_unique<io::EventLog>(options.overrun_log);
+    log = std::make_unique<io::log::EventLog>(options.overrun_log);
   } catch (const std::exception& e) {
     std::cerr << "rig: " << e.what() << "\n";
     return 1;
@@ -161,7 +161,7 @@ int run(const RunOptions& options) {
     return 1;
   }
 
-  io::SystemdNotifier notifier;
+  io::systemd::SystemdNotifier notifier;
   exec.go();
   notifier.ready();
 

@@ -10,9 +10,9 @@ std::vector<std::unique_ptr<io::CycleIo>> make_io(const RigConfig& config,
   std::vector<std::unique_ptr<io::CycleIo>> io;
   // CAN: a [can] section and not `--can none`; `--can IFACE` overrides the interface.
   if (config.can.has_value() && options.can != "none") {
-    io::can::CanSettings can = *config.can;
+    io::can::bridge::CanSettings can = *config.can;
     if (!options.can.empty()) can.interface = options.can;
-    io.push_back(io::can::make_can_io(can));
+    io.push_back(io::can::bridge::make_can_io(can));
   }
   return io;
 }
@@ -22,10 +22,10 @@ std::vector<std::unique_ptr<io::SnapshotSink>> make_sinks(const RigConfig& confi
   std::vector<std::unique_ptr<io::SnapshotSink>> sinks;
   // LCM: [lcm] settings; --lcm-url overrides the URL ("none": no publisher), --lcm-log adds a
   // log file writer (the file is opened here, so a bad path fails before the loop starts).
-  io::LcmSettings lcm = config.lcm;
+  io::lcm::LcmSettings lcm = config.lcm;
   if (!options.lcm_url.empty()) lcm.url = options.lcm_url;
-  if (lcm.url != "none") sinks.push_back(io::make_lcm_publisher(lcm));
-  if (!options.lcm_log.empty()) sinks.push_back(io::make_lcm_log_writer(options.lcm_log, lcm));
+  if (lcm.url != "none") sinks.push_back(io::lcm::make_lcm_publisher(lcm));
+  if (!options.lcm_log.empty()) sinks.push_back(io::lcm::make_lcm_log_writer(options.lcm_log, lcm));
   return sinks;
 }
 

@@ -5,11 +5,11 @@
 #include <stdexcept>
 #include <string>
 
-namespace rig::io {
+namespace rig::io::config {
 
 class ConfigError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
-}  // namespace rig::io
+}  // namespace rig::io::config

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-namespace rig::io {
+namespace rig::io::config {
 
 toml::table load_toml_file(const std::filesystem::path& file) {
   std::error_code ec;
@@ -19,8 +19,7 @@ toml::table load_toml_file(const std::filesystem::path& file) {
   }
 }
 
-StrictTable::StrictTable(const toml::table& table, std::filesystem::path file,
-                         std::string context)
+StrictTable::StrictTable(const toml::table& table, std::filesystem::path file, std::string context)
     : table_(&table), file_(std::move(file)), context_(std::move(context)) {}
 
 std::string StrictTable::where(const toml::source_region& region) const {
@@ -149,7 +148,8 @@ std::vector<StrictTable> StrictTable::tables(std::string_view key) {
   for (const toml::node& element : *arr) {
     const toml::table* t = element.as_table();
     if (t == nullptr) throw error(key, "expected an array of tables");
-    out.emplace_back(*t, file_, context_ + "." + std::string(key) + "[" + std::to_string(i++) + "]");
+    out.emplace_back(*t, file_,
+                     context_ + "." + std::string(key) + "[" + std::to_string(i++) + "]");
   }
   return out;
 }
@@ -176,4 +176,4 @@ void StrictTable::finish() const {
   }
 }
 
-}  // namespace rig::io
+}  // namespace rig::io::config

@@ -13,7 +13,7 @@
 
 #include "io/config/config_error.h"
 
-namespace rig::io {
+namespace rig::io::config {
 
 /// Parses a TOML file. Throws ConfigError("file:line: ...") if it is missing or malformed.
 toml::table load_toml_file(const std::filesystem::path& file);
@@ -71,4 +71,4 @@ class StrictTable {
   std::vector<std::string> used_;
 };
 
-}  // namespace rig::io
+}  // namespace rig::io::config

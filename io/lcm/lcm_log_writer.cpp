@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 LcmLogWriter::LcmLogWriter(const std::string& path, LcmSettings settings)
     : encoder_(std::move(settings)), path_(path) {
@@ -65,4 +65,4 @@ void LcmLogWriter::stop() {
   }
 }
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

@@ -11,7 +11,7 @@
 
 typedef struct _lcm_eventlog_t lcm_eventlog_t;
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 /// Each event's timestamp is the wall-clock time at start() plus the snapshot's simulated time,
 /// so that lcm-logplayer replays the run at its simulated pace even if it ran offline.
@@ -36,4 +36,4 @@ class LcmLogWriter final : public SnapshotSink {
   bool write_failed_ = false;
 };
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

@@ -9,7 +9,7 @@
 
 #include "io/lcm/multicast_route.h"
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 LcmPublisher::LcmPublisher(LcmSettings settings) : encoder_(std::move(settings)) {}
 
@@ -73,4 +73,4 @@ void LcmPublisher::stop() {
   }
 }
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

@@ -10,7 +10,7 @@
 
 typedef struct _lcm_t lcm_t;
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 /// Publishes RIG_STATE, RIG_SIGNALS and RIG_STATUS at their configured rates. If LCM cannot be
 /// set up (no multicast route, bad URL) or a publish fails for good, it prints one message to
@@ -39,4 +39,4 @@ class LcmPublisher final : public SnapshotSink {
   std::uint64_t send_failures_ = 0;
 };
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 namespace {
 
@@ -18,7 +18,7 @@ bool valid_channel_prefix(const std::string& prefix) {
 
 }  // namespace
 
-LcmSettings read_lcm_settings(StrictTable& lcm_table) {
+LcmSettings read_lcm_settings(config::StrictTable& lcm_table) {
   LcmSettings settings;
   settings.url = lcm_table.string("url", settings.url);
   if (settings.url.find("://") == std::string::npos) {
@@ -40,4 +40,4 @@ LcmSettings read_lcm_settings(StrictTable& lcm_table) {
   return settings;
 }
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

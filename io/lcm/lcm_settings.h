@@ -6,7 +6,7 @@
 
 #include "io/config/strict_table.h"
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 /// Default LCM URL: UDP multicast that stays on the host (ttl=0) unless the user opens it.
 inline constexpr const char* kDefaultLcmUrl = "udpm://239.255.76.67:7667?ttl=0";
@@ -27,8 +27,8 @@ struct LcmSettings {
 };
 
 /// Reads the [lcm] table (keys url, channel_prefix, state_rate_hz, status_rate_hz,
-/// signals_rate_hz; all optional) and rejects unknown keys (calls finish()). Throws ConfigError
-/// with `file:line` on bad values.
-LcmSettings read_lcm_settings(StrictTable& lcm_table);
+/// signals_rate_hz; all optional) and rejects unknown keys (calls finish()). Throws
+/// config::ConfigError with `file:line` on bad values.
+LcmSettings read_lcm_settings(config::StrictTable& lcm_table);
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

@@ -3,7 +3,7 @@
 #include "io/lcm/lcm_log_writer.h"
 #include "io/lcm/lcm_publisher.h"
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 std::unique_ptr<SnapshotSink> make_lcm_publisher(const LcmSettings& settings) {
   return std::make_unique<LcmPublisher>(settings);
@@ -14,4 +14,4 @@ std::unique_ptr<SnapshotSink> make_lcm_log_writer(const std::string& path,
   return std::make_unique<LcmLogWriter>(path, settings);
 }
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

@@ -8,7 +8,7 @@
 #include "io/lcm/lcm_settings.h"
 #include "io/snapshot_sink.h"
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 /// The live publisher (`--lcm-url URL`). Never throws for a missing network: it reports once and
 /// turns itself off at start().
@@ -19,4 +19,4 @@ std::unique_ptr<SnapshotSink> make_lcm_publisher(const LcmSettings& settings);
 std::unique_ptr<SnapshotSink> make_lcm_log_writer(const std::string& path,
                                                   const LcmSettings& settings);
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 namespace {
 
@@ -226,4 +226,4 @@ void fill_status(const Snapshot& snapshot, const RunInfo& info, const StatusTota
   }
 }
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

@@ -13,7 +13,7 @@
 #include "rig/signals_t.hpp"
 #include "rig/vehicle_state_t.hpp"
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 /// Totals the status message carries besides the window percentiles; kept by the sink.
 struct StatusTotals {
@@ -28,4 +28,4 @@ void fill_signals(const Snapshot& snapshot, rig::signals_t& msg);
 void fill_status(const Snapshot& snapshot, const RunInfo& info, const StatusTotals& totals,
                  const TimingPercentiles& window, rig::rig_status_t& msg);
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

@@ -8,7 +8,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 std::optional<MulticastAddress> parse_udpm_url(const std::string& url) {
   constexpr std::string_view kScheme = "udpm://";
@@ -56,4 +56,4 @@ std::string check_multicast_route(const std::string& url) {
          std::strerror(error) + "). " + multicast_route_advice();
 }
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

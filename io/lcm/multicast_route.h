@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 /// Host and port of a `udpm://HOST:PORT?...` URL; nullopt for other providers.
 struct MulticastAddress {
@@ -22,4 +22,4 @@ std::string check_multicast_route(const std::string& url);
 /// The advice given whenever LCM cannot be used for want of a multicast route.
 std::string multicast_route_advice();
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

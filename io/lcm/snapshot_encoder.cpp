@@ -4,7 +4,7 @@
 #include <cmath>
 #include <utility>
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 void RateDivider::configure(double rate_hz, double period_s) {
   if (!(rate_hz > 0.0) || !(period_s > 0.0)) {
@@ -70,4 +70,4 @@ std::size_t SnapshotEncoder::encode(const Snapshot& snapshot, std::uint64_t drop
   return n;
 }
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

@@ -13,7 +13,7 @@
 #include "io/lcm/timing_window.h"
 #include "io/snapshot_sink.h"
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 /// Publishes every `divisor`-th cycle (cycle % divisor == 0), so that dropped snapshots do not
 /// shift the phase. Disabled when the rate is 0.
@@ -69,4 +69,4 @@ class SnapshotEncoder {
   std::vector<std::uint8_t> state_buffer_, signals_buffer_, status_buffer_;
 };
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

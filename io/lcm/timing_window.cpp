@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 void TimingWindow::reset(std::size_t capacity) {
   capacity = std::max<std::size_t>(capacity, 1);
@@ -53,4 +53,4 @@ TimingPercentiles TimingWindow::percentiles() {
   return out;
 }
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

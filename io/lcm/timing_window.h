@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace rig::io {
+namespace rig::io::lcm {
 
 /// Percentiles of one window (nearest rank). All zero if the window is empty.
 struct TimingPercentiles {
@@ -45,4 +45,4 @@ class TimingWindow {
 std::int64_t nearest_rank_percentile(std::vector<std::int64_t>& values, std::size_t count,
                                      double p);
 
-}  // namespace rig::io
+}  // namespace rig::io::lcm

@@ -8,7 +8,7 @@
 #include <span>
 #include <stdexcept>
 
-namespace rig::io {
+namespace rig::io::log {
 namespace {
 
 void copy_into(std::span<char> out, std::string_view text) noexcept {
@@ -169,4 +169,4 @@ void EventLog::stop() {
   }
 }
 
-}  // namespace rig::io
+}  // namespace rig::io::log

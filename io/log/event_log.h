@@ -15,7 +15,7 @@
 #include "io/snapshot.h"
 #include "rig/spsc_ring.h"
 
-namespace rig::io {
+namespace rig::io::log {
 
 /// One log entry, plain data (copied through the ring).
 struct LogRecord {
@@ -67,4 +67,4 @@ class EventLog {
   std::atomic<std::uint64_t> written_{0};
 };
 
-}  // namespace rig::io
+}  // namespace rig::io::log

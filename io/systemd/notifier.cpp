@@ -2,7 +2,7 @@
 
 #include <systemd/sd-daemon.h>
 
-namespace rig::io {
+namespace rig::io::systemd {
 
 SystemdNotifier::SystemdNotifier() {
   std::uint64_t usec = 0;
@@ -29,4 +29,4 @@ bool SystemdNotifier::maybe_ping(std::uint64_t loop_cycles, std::int64_t now_ns)
   return true;
 }
 
-}  // namespace rig::io
+}  // namespace rig::io::systemd

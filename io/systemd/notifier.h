@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-namespace rig::io {
+namespace rig::io::systemd {
 
 class SystemdNotifier {
  public:
@@ -37,4 +37,4 @@ class SystemdNotifier {
   bool withholding_ = false;
 };
 
-}  // namespace rig::io
+}  // namespace rig::io::systemd

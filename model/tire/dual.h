@@ -2,7 +2,7 @@
 /// @file
 /// A forward-mode dual number with N fixed derivative slots: exact partial derivatives of the
 /// smooth TMeasy formulas without hand-written chain rules. Allocation-free; internal to
-/// model/tire (used by the .cc files).
+/// model/tire (used by the .cpp files).
 
 #include <cmath>
 

@@ -6,7 +6,7 @@
 /// (eq. 24), the wheel-spin stage and the framework. All characteristic math is
 /// model/tire/tmeasy_characteristic.h (and the curves are tire::TmeasyCurvePair in TireParams);
 /// this file guards lift-off and the far ends of the load law. The deflection dynamics
-/// (eqs. 22-26) live in tire_deflection.h, wheel_spin.cc and vehicle_framework.cc.
+/// (eqs. 22-26) live in tire_deflection.h, wheel_spin.cpp and vehicle_framework.cpp.
 
 #include "model/tire/tmeasy_characteristic.h"
 #include "model/tire/tmeasy_params.h"

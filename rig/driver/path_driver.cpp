@@ -26,7 +26,7 @@ std::vector<PathPoint> iso3888_1_centreline(double start_x_m, double lane_offset
   return path;
 }
 
-PathDriverParams read_path_driver(io::StrictTable& t, const PathDriverVehicle& vehicle) {
+PathDriverParams read_path_driver(io::config::StrictTable& t, const PathDriverVehicle& vehicle) {
   PathDriverParams p;
   const std::string path = t.choice("path", "iso3888-1", {"iso3888-1", "straight"});
   const double start_x_m = t.number_in("path_start_x_m", 30.0, -1e6, 1e6);

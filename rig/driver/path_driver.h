@@ -52,7 +52,8 @@ struct PathDriverVehicle {
 ///   brake_gain_pa_per_mps, stop_time_s, stop_brake_pressure_front_pa,
 ///   stop_brake_pressure_rear_pa, stop_brake_ramp_s.
 /// Throws ConfigError(file:line) on unknown keys or impossible values; calls finish().
-PathDriverParams read_path_driver(io::StrictTable& driver_table, const PathDriverVehicle& vehicle);
+PathDriverParams read_path_driver(io::config::StrictTable& driver_table,
+                                  const PathDriverVehicle& vehicle);
 
 /// ISO 3888-1 double lane change centreline (sections 15 / 30 / 25 / 25 / 15 m + run-out),
 /// lane offset 3.5 m, smooth (cosine) transitions; starts at x = start_x_m.

@@ -6,7 +6,7 @@
 
 namespace rig::driver {
 
-TableDriverParams read_table_driver(io::StrictTable& t) {
+TableDriverParams read_table_driver(io::config::StrictTable& t) {
   TableDriverParams p;
   const auto& raw = t.raw();
   // columns/rows are arrays of strings/arrays, which StrictTable has no reader for: check the

@@ -19,7 +19,7 @@ struct TableDriverParams {
 
 /// Reads `[driver] kind = "table"`: columns = ["time_s", <input names>...], rows = [[t, v...]...].
 /// Throws ConfigError(file:line) on unknown names, non-input signals, ragged or unsorted rows.
-TableDriverParams read_table_driver(io::StrictTable& driver_table);
+TableDriverParams read_table_driver(io::config::StrictTable& driver_table);
 
 class TableDriver final : public Driver {
  public:

@@ -11,7 +11,7 @@
 #include <ostream>
 #include <vector>
 
-#include "model/examples/coupled_pendulums/coupled_pendulums.h"
+#include "model/paper/coupled_pendulums.h"
 #include "model/solver/constraint_coupling.h"
 #include "rig/paper/spring_reference.h"
 
@@ -34,7 +34,7 @@ std::vector<QuarterCarRow> run_quarter_car(double h, double t_end, int output_ev
 /// (lambda unknown there: 0) and after every output_every-th step.
 std::vector<PendulumRow> run_pendulums_dae(
     double h, double t_end, int output_every = 1,
-    const model::solver::NewtonParams& newton = model::examples::default_pendulum_newton_params());
+    const model::solver::NewtonParams& newton = model::paper::default_pendulum_newton_params());
 
 /// The CVODE spring-damper reference sampled at multiples of h (rows as for the DAE).
 std::vector<PendulumRow> run_pendulums_spring(double h, double t_end, int output_every = 1,

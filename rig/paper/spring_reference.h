@@ -9,7 +9,7 @@
 
 #include <memory>
 
-#include "model/examples/coupled_pendulums/coupled_pendulums_params.h"
+#include "model/paper/coupled_pendulums_params.h"
 
 namespace rig::paper {
 
@@ -22,7 +22,7 @@ struct SpringReferenceParams {
 
 class SpringReference {
  public:
-  explicit SpringReference(const model::examples::CoupledPendulumsParams& pendulums = {},
+  explicit SpringReference(const model::paper::CoupledPendulumsParams& pendulums = {},
                            const SpringReferenceParams& params = {});
   ~SpringReference();
   SpringReference(const SpringReference&) = delete;

@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   dbc::Database db;
   try {
     db = dbc::parse_dbc(text, "fuzz.dbc");
-  } catch (const rig::io::ConfigError&) {
+  } catch (const rig::io::config::ConfigError&) {
     return 0;
   }
   std::array<std::uint8_t, 64> frame{};

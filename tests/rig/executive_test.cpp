@@ -62,7 +62,7 @@ struct Harness {
   }
   FakeClock clock;
   test::OscillatorModel model;
-  io::EventLog log;
+  io::log::EventLog log;
   Executive exec;
 };
 
@@ -225,7 +225,7 @@ TEST(Executive, RequestStopEndsTheLoop) {
 TEST(EventLog, OverflowWritesTheLostCount) {
   const auto log_path = temp_path("overflow.jsonl");
   {
-    io::EventLog log(log_path.string(), 8);
+    io::log::EventLog log(log_path.string(), 8);
     for (int i = 0; i < 20; ++i) log.event(0, i, "e", "x");  // writer not started: 12 lost
     EXPECT_EQ(log.lost(), 12u);
     log.stop();
@@ -288,14 +288,14 @@ TEST(Config, BadInputGivesFileLine) {
     try {
       (void)load_config(file);
       ADD_FAILURE() << "no error for:\n" << c.text;
-    } catch (const io::ConfigError& e) {
+    } catch (const io::config::ConfigError& e) {
       const std::string what = e.what();
       EXPECT_EQ(what.rfind(file.string() + ":" + std::to_string(c.line) + ":", 0), 0u) << what;
       EXPECT_NE(what.find(c.message), std::string::npos) << what;
     }
     std::filesystem::remove(file);
   }
-  EXPECT_THROW((void)load_config("/nonexistent/rig.toml"), io::ConfigError);
+  EXPECT_THROW((void)load_config("/nonexistent/rig.toml"), io::config::ConfigError);
 }
 
 TEST(Config, PaperQuarterCarConfigReproducesThePaperManeuver) {
@@ -389,7 +389,7 @@ TEST(Executive, LoopThreadDoesNotAllocate) {
   auto driver = make_driver(config);
   ASSERT_NE(driver, nullptr);
   VirtualClock clock;
-  io::EventLog log("");
+  io::log::EventLog log("");
   CountingSink sink;
   ExecutiveParams p;
   p.offline = true;  // the same loop, no SCHED_FIFO needed in the test

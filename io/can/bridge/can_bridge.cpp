@@ -4,10 +4,11 @@
 #include <span>
 #include <utility>
 
-namespace rig::io::can {
+namespace rig::io::can::bridge {
 
-TransportSettings CanBridge::with_filter(TransportSettings settings, const CanConfig& config,
-                                         bool kernel_filter) {
+can::transport::TransportSettings CanBridge::with_filter(can::transport::TransportSettings settings,
+                                                         const can::mapping::CanConfig& config,
+                                                         bool kernel_filter) {
   settings.use_filter = kernel_filter;
   settings.filter_ids.clear();
   settings.extended_filter_ids.clear();
@@ -20,7 +21,8 @@ TransportSettings CanBridge::with_filter(TransportSettings settings, const CanCo
   return settings;
 }
 
-CanBridge::CanBridge(CanConfig config, TransportSettings transport_settings, bool kernel_filter)
+CanBridge::CanBridge(can::mapping::CanConfig config,
+                     can::transport::TransportSettings transport_settings, bool kernel_filter)
     : config_(std::move(config)),
       rx_(config_),
       tx_(config_),
@@ -35,7 +37,7 @@ void CanBridge::start(std::int64_t monotonic_ns) noexcept {
 void CanBridge::receive(std::int64_t monotonic_ns, model::Signals& inputs) noexcept {
   if (!started_) start(monotonic_ns);
   transport_.service(monotonic_ns);
-  transport_.drain([&](const TransportFrame& f) {
+  transport_.drain([&](const can::transport::TransportFrame& f) {
     rx_.on_frame(f.id, f.extended, f.data.data(), f.len, monotonic_ns, rx_signals_,
                  engine_counters_);
   });
@@ -49,11 +51,11 @@ void CanBridge::receive(std::int64_t monotonic_ns, model::Signals& inputs) noexc
 
 void CanBridge::transmit(std::int64_t monotonic_ns, const model::Signals& outputs) noexcept {
   if (!started_) start(monotonic_ns);
-  const std::size_t n =
-      tx_.due_frames(monotonic_ns, outputs, std::span<TxFrame>(tx_frames_), engine_counters_);
+  const std::size_t n = tx_.due_frames(
+      monotonic_ns, outputs, std::span<can::mapping::TxFrame>(tx_frames_), engine_counters_);
   for (std::size_t i = 0; i < n; ++i) {
-    const TxFrame& in = tx_frames_[i];
-    TransportFrame out;
+    const can::mapping::TxFrame& in = tx_frames_[i];
+    can::transport::TransportFrame out;
     out.id = in.id;
     out.extended = in.extended;
     out.fd = in.fd;
@@ -65,7 +67,7 @@ void CanBridge::transmit(std::int64_t monotonic_ns, const model::Signals& output
 
 void CanBridge::read_counters(IoCounters& counters) const noexcept {
   counters = engine_counters_;  // timeouts, checksum/counter failures, bad/unknown, out_of_range
-  const TransportCounters& t = transport_.counters();
+  const can::transport::TransportCounters& t = transport_.counters();
   counters.bus_state = transport_.state();
   counters.frames_received = t.frames_received;
   counters.rx_overflows = t.rx_overflows;
@@ -77,4 +79,4 @@ void CanBridge::read_counters(IoCounters& counters) const noexcept {
   counters.reopens = t.reopens;
 }
 
-}  // namespace rig::io::can
+}  // namespace rig::io::can::bridge

@@ -3,9 +3,9 @@
 #include "io/can/bridge/can_bridge.h"
 #include "io/can/dbc/dbc_parser.h"
 
-namespace rig::io::can {
+namespace rig::io::can::bridge {
 
-CanSettings read_can_settings(StrictTable& can_table) {
+CanSettings read_can_settings(config::StrictTable& can_table) {
   CanSettings s;
   s.interface = can_table.string("interface", "vcan0");
   if (s.interface.empty() || s.interface.size() > 15) {
@@ -20,22 +20,22 @@ CanSettings read_can_settings(StrictTable& can_table) {
 }
 
 std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings) {
-  CanConfig config;
+  can::mapping::CanConfig config;
   if (settings.dbc_file) {
     config.database = dbc::load_dbc(*settings.dbc_file);
-    toml::table root = load_toml_file(settings.mapping_file);
-    StrictTable table(root, settings.mapping_file, "mapping");
+    toml::table root = config::load_toml_file(settings.mapping_file);
+    config::StrictTable table(root, settings.mapping_file, "mapping");
     (void)table.string("dbc", "");  // superseded by [can] dbc
-    config.mapping = parse_can_mapping(table, config.database);
+    config.mapping = can::mapping::parse_can_mapping(table, config.database);
     table.finish();
   } else {
-    config = load_can_config(settings.mapping_file);
+    config = can::mapping::load_can_config(settings.mapping_file);
   }
-  TransportSettings transport;
+  can::transport::TransportSettings transport;
   transport.interface = settings.interface;
   transport.fd = settings.fd;
   return std::make_unique<CanBridge>(std::move(config), std::move(transport),
                                      settings.kernel_filter);
 }
 
-}  // namespace rig::io::can
+}  // namespace rig::io::can::bridge

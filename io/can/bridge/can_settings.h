@@ -21,7 +21,7 @@
 #include "io/config/strict_table.h"
 #include "io/cycle_io.h"
 
-namespace rig::io::can {
+namespace rig::io::can::bridge {
 
 struct CanSettings {
   std::string interface = "vcan0";
@@ -31,11 +31,12 @@ struct CanSettings {
   bool kernel_filter = false;
 };
 
-/// Reads a [can] table (load time; ConfigError with file:line on bad input). Calls finish().
-CanSettings read_can_settings(StrictTable& can_table);
+/// Reads a [can] table (load time; config::ConfigError with file:line on bad input). Calls
+/// finish().
+CanSettings read_can_settings(config::StrictTable& can_table);
 
-/// Loads DBC and mapping, opens the transport. Throws ConfigError (bad DBC/mapping) or
-/// TransportError (no SocketCAN, unknown interface), both with a clear message.
+/// Loads DBC and mapping, opens the transport. Throws config::ConfigError (bad DBC/mapping) or
+/// can::transport::TransportError (no SocketCAN, unknown interface), both with a clear message.
 std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings);
 
-}  // namespace rig::io::can
+}  // namespace rig::io::can::bridge

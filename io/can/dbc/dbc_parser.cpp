@@ -89,7 +89,7 @@ class Parser {
 
   // ---------------------------------------------------------------- errors
   [[noreturn]] void fail(int line, const std::string& what) const {
-    throw ConfigError(std::string(file_) + ":" + std::to_string(line) + ": " + what);
+    throw config::ConfigError(std::string(file_) + ":" + std::to_string(line) + ": " + what);
   }
   void warn(int line, const std::string& what) {
     db_.warnings.push_back(std::string(file_) + ":" + std::to_string(line) + ": " + what);
@@ -673,7 +673,7 @@ Database parse_dbc(std::string_view text, std::string_view file_name) {
 
 Database load_dbc(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw ConfigError(file.string() + ":1: cannot read DBC file");
+  if (!in) throw config::ConfigError(file.string() + ":1: cannot read DBC file");
   std::ostringstream buffer;
   buffer << in.rdbuf();
   return parse_dbc(buffer.str(), file.string());

@@ -9,10 +9,10 @@
 /// SIG_VALTYPE_ (1 = float32, 2 = double). Every other section is skipped up to its `;` and
 /// noted in Database::warnings.
 ///
-/// Errors throw io::ConfigError("file:line: what is wrong"), e.g. a bad BO_ or SG_, a number
-/// that does not parse, an unterminated string, a duplicate message id, a signal that does not
-/// fit in its message. Hostile input is safe: no recursion, bounded work per byte, sizes checked
-/// before use (the parser is fuzzed by tests/fuzz/dbc_fuzzer.cpp).
+/// Errors throw io::config::ConfigError("file:line: what is wrong"), e.g. a bad BO_ or SG_, a
+/// number that does not parse, an unterminated string, a duplicate message id, a signal that does
+/// not fit in its message. Hostile input is safe: no recursion, bounded work per byte, sizes
+/// checked before use (the parser is fuzzed by tests/fuzz/dbc_fuzzer.cpp).
 
 #include <filesystem>
 #include <string_view>
@@ -25,7 +25,7 @@ namespace rig::io::can::dbc {
 /// Parses DBC text. `file_name` is only used in messages.
 Database parse_dbc(std::string_view text, std::string_view file_name);
 
-/// Reads and parses a DBC file. Throws ConfigError if it cannot be read or is malformed.
+/// Reads and parses a DBC file. Throws config::ConfigError if it cannot be read or is malformed.
 Database load_dbc(const std::filesystem::path& file);
 
 }  // namespace rig::io::can::dbc

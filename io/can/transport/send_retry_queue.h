@@ -14,7 +14,7 @@
 
 #include "io/can/transport/transport_frame.h"
 
-namespace rig::io::can {
+namespace rig::io::can::transport {
 
 class SendRetryQueue {
  public:
@@ -53,4 +53,4 @@ class SendRetryQueue {
   std::size_t size_ = 0;
 };
 
-}  // namespace rig::io::can
+}  // namespace rig::io::can::transport

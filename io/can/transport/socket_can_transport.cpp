@@ -14,7 +14,7 @@
 #include <ctime>
 #include <utility>
 
-namespace rig::io::can {
+namespace rig::io::can::transport {
 namespace {
 
 // SO_RXQ_OVFL is not in every libc's headers.
@@ -297,4 +297,4 @@ SendStatus SocketCanTransport::send(const TransportFrame& frame) noexcept {
   return SendStatus::kDropped;
 }
 
-}  // namespace rig::io::can
+}  // namespace rig::io::can::transport

@@ -31,7 +31,7 @@
 #include "io/can/transport/transport_settings.h"
 #include "io/io_counters.h"
 
-namespace rig::io::can {
+namespace rig::io::can::transport {
 
 /// Outcome of one send().
 enum class SendStatus : std::uint8_t {
@@ -105,4 +105,4 @@ class SocketCanTransport {
 /// Whether this kernel offers AF_CAN raw sockets; on false, `why` says what failed.
 bool can_sockets_available(std::string* why = nullptr);
 
-}  // namespace rig::io::can
+}  // namespace rig::io::can::transport

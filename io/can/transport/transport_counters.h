@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-namespace rig::io::can {
+namespace rig::io::can::transport {
 
 struct TransportCounters {
   std::uint64_t frames_received = 0;  ///< data frames handed over
@@ -20,4 +20,4 @@ struct TransportCounters {
   std::uint64_t other_errors = 0;     ///< unexpected errno from recv/send
 };
 
-}  // namespace rig::io::can
+}  // namespace rig::io::can::transport

@@ -6,11 +6,11 @@
 #include <stdexcept>
 #include <string>
 
-namespace rig::io::can {
+namespace rig::io::can::transport {
 
 class TransportError : public std::runtime_error {
  public:
   explicit TransportError(const std::string& what) : std::runtime_error(what) {}
 };
 
-}  // namespace rig::io::can
+}  // namespace rig::io::can::transport

@@ -5,7 +5,7 @@
 #include <array>
 #include <cstdint>
 
-namespace rig::io::can {
+namespace rig::io::can::transport {
 
 struct TransportFrame {
   std::uint32_t id = 0;          ///< 11-bit or 29-bit identifier, without flag bits
@@ -18,4 +18,4 @@ struct TransportFrame {
   std::int64_t rx_realtime_ns = 0;  ///< kernel receive timestamp (CLOCK_REALTIME), 0 if none
 };
 
-}  // namespace rig::io::can
+}  // namespace rig::io::can::transport

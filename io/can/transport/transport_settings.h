@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace rig::io::can {
+namespace rig::io::can::transport {
 
 struct TransportSettings {
   std::string interface = "vcan0";  ///< e.g. can0, vcan0
@@ -23,4 +23,4 @@ struct TransportSettings {
   int receive_buffer_bytes = 0;                   ///< SO_RCVBUF, 0 = kernel default
 };
 
-}  // namespace rig::io::can
+}  // namespace rig::io::can::transport

@@ -8,13 +8,13 @@
 #include <vector>
 
 #include "io/can/dbc/dbc_parser.h"
-#include "io/can/dbc/rx_processor.h"
 #include "io/can/dbc/signal_codec.h"
-#include "io/can/dbc/tx_scheduler.h"
+#include "io/can/mapping/rx_processor.h"
+#include "io/can/mapping/tx_scheduler.h"
 
 namespace {
 
-namespace can = rig::io::can;
+namespace can = rig::io::can::mapping;
 namespace dbc = rig::io::can::dbc;
 
 const can::CanConfig& config() {

@@ -6,11 +6,12 @@
 
 #include <benchmark/benchmark.h>
 
+#include "io/config/combination_file.h"
 #include "io/config/strict_table.h"
+#include "io/config/vehicle_file.h"
 #include "model/combination/combination.h"
 #include "model/combination/force_coupled.h"
-#include "rig/vehicle_config/thread_begin_step_runner.h"
-#include "rig/vehicle_config/vehicle_config.h"
+#include "rig/thread_begin_step_runner.h"
 
 namespace {
 
@@ -24,16 +25,16 @@ constexpr const char* kCarTrailer = RIG_SOURCE_DIR "/config/combinations/car-tra
 constexpr const char* kTractorSemi = RIG_SOURCE_DIR "/config/combinations/tractor-semitrailer.toml";
 
 CombinationParams load(const char* file, bool parallel) {
-  const toml::table doc = rig::io::load_toml_file(file);
-  rig::io::StrictTable top(doc, file, "top level");
-  rig::io::StrictTable m = top.table("model");
+  const toml::table doc = rig::io::config::load_toml_file(file);
+  rig::io::config::StrictTable top(doc, file, "top level");
+  rig::io::config::StrictTable m = top.table("model");
   (void)m.string("kind");
-  const auto s = rig::vehicle_config::read_combination_model(m);
+  const auto s = rig::io::config::read_combination_model(m);
   CombinationParams p;
   p.units = s.units;
   p.joints = s.joints;
   p.parallel = parallel;
-  p.begin_step_runner = rig::vehicle_config::make_thread_begin_step_runner;
+  p.begin_step_runner = rig::make_thread_begin_step_runner;
   p.newton = rig::model::combination::default_combination_newton_params();
   return p;
 }

@@ -10,8 +10,8 @@
 
 namespace {
 
-rig::io::LcmSettings state_only(const std::string& url) {
-  rig::io::LcmSettings settings;
+rig::io::lcm::LcmSettings state_only(const std::string& url) {
+  rig::io::lcm::LcmSettings settings;
   settings.url = url;
   settings.signals_rate_hz = 0;
   settings.status_rate_hz = 0;
@@ -19,10 +19,10 @@ rig::io::LcmSettings state_only(const std::string& url) {
 }
 
 void BM_EncodeState(benchmark::State& state) {
-  rig::io::SnapshotEncoder encoder(state_only("memq://"));
+  rig::io::lcm::SnapshotEncoder encoder(state_only("memq://"));
   encoder.start(rig::io::RunInfo{});
   rig::io::Snapshot snapshot = rig::test::make_synthetic_snapshot(1, 0.001);
-  rig::io::EncodedMessage out[3];
+  rig::io::lcm::EncodedMessage out[3];
   std::size_t bytes = 0;
   for (auto _ : state) {
     ++snapshot.timing.cycle;
@@ -34,12 +34,12 @@ void BM_EncodeState(benchmark::State& state) {
 BENCHMARK(BM_EncodeState);
 
 void BM_EncodeAllChannels(benchmark::State& state) {
-  rig::io::LcmSettings settings;
+  rig::io::lcm::LcmSettings settings;
   settings.state_rate_hz = settings.signals_rate_hz = settings.status_rate_hz = 1000;
-  rig::io::SnapshotEncoder encoder(settings);
+  rig::io::lcm::SnapshotEncoder encoder(settings);
   encoder.start(rig::io::RunInfo{});
   rig::io::Snapshot snapshot = rig::test::make_synthetic_snapshot(1, 0.001);
-  rig::io::EncodedMessage out[3];
+  rig::io::lcm::EncodedMessage out[3];
   for (auto _ : state) {
     ++snapshot.timing.cycle;
     benchmark::DoNotOptimize(encoder.encode(snapshot, 0, out));
@@ -48,7 +48,7 @@ void BM_EncodeAllChannels(benchmark::State& state) {
 BENCHMARK(BM_EncodeAllChannels);
 
 void BM_EncodeAndPublishState_udpm(benchmark::State& state) {
-  rig::io::LcmPublisher publisher(state_only(rig::io::kDefaultLcmUrl));
+  rig::io::lcm::LcmPublisher publisher(state_only(rig::io::lcm::kDefaultLcmUrl));
   publisher.start(rig::io::RunInfo{});
   if (!publisher.active()) {
     state.SkipWithError("LCM is not available here (no multicast route)");

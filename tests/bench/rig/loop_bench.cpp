@@ -37,7 +37,7 @@ void BM_ExecutiveCycle(benchmark::State& state) {
   std::array<rig::model::SignalSource, rig::model::kSignalCount> routing{};
   routing[rig::model::index(rig::model::Signal::kThrottlePedal)] =
       rig::model::SignalSource::kDriver;
-  rig::io::EventLog log("");
+  rig::io::log::EventLog log("");
   while (state.KeepRunningBatch(kBatch)) {
     state.PauseTiming();
     NullModel model;

@@ -5,17 +5,17 @@
 
 #include <benchmark/benchmark.h>
 
-#include "model/examples/coupled_pendulums/coupled_pendulums.h"
-#include "model/examples/quarter_car/quarter_car.h"
+#include "model/paper/coupled_pendulums.h"
+#include "model/paper/quarter_car.h"
 #include "model/solver/arrowhead_factorization.h"
 #include "model/solver/dense_factorization.h"
 #include "rig/paper/spring_reference.h"
 
 namespace {
 
-using rig::model::examples::CoupledPendulums;
-using rig::model::examples::paper_maneuver_inputs;
-using rig::model::examples::QuarterCar;
+using rig::model::paper::CoupledPendulums;
+using rig::model::paper::paper_maneuver_inputs;
+using rig::model::paper::QuarterCar;
 
 double thread_cpu_s() {
   timespec ts{};

@@ -4,8 +4,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "io/config/vehicle_file.h"
 #include "model/vehicle/vehicle_model.h"
-#include "rig/vehicle_config/vehicle_config.h"
 
 namespace {
 
@@ -22,7 +22,7 @@ Signals inputs() {
 }
 
 void step_bench(benchmark::State& state, const char* file) {
-  rig::model::vehicle::VehicleModel m(rig::vehicle_config::load_vehicle_file(file), 1e-3);
+  rig::model::vehicle::VehicleModel m(rig::io::config::load_vehicle_file(file), 1e-3);
   Signals s = inputs();
   m.set_forward_speed(15);
   for (int k = 0; k < 2000; ++k) (void)m.step(s);  // into a steady turn
@@ -41,7 +41,7 @@ void BM_TruckStep(benchmark::State& state) {
 /// 20 s of a double-lane-change-like steering input at 60 km/h, offline (wall time per run).
 void BM_Sedan20sOffline(benchmark::State& state) {
   const auto params =
-      rig::vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+      rig::io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
   for (auto _ : state) {
     rig::model::vehicle::VehicleModel m(params, 1e-3);
     Signals s = inputs();

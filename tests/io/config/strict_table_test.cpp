@@ -20,17 +20,18 @@ std::filesystem::path write_file(const std::string& name, const std::string& tex
 std::string message_of(const std::function<void()>& f) {
   try {
     f();
-  } catch (const ConfigError& e) {
+  } catch (const config::ConfigError& e) {
     return e.what();
   }
   return "";
 }
 
 TEST(StrictTable, ReadsValuesAndRejectsUnknownKeysWithLine) {
-  const auto file = write_file("strict1.toml", "[rig]\nperiod_s = 0.001\npriority = 80\ntypo = 1\n");
-  const toml::table root = load_toml_file(file);
-  StrictTable top(root, file, "top");
-  StrictTable rig = top.table("rig");
+  const auto file =
+      write_file("strict1.toml", "[rig]\nperiod_s = 0.001\npriority = 80\ntypo = 1\n");
+  const toml::table root = config::load_toml_file(file);
+  config::StrictTable top(root, file, "top");
+  config::StrictTable rig = top.table("rig");
   EXPECT_DOUBLE_EQ(rig.number_in("period_s", 1e-6, 1.0), 0.001);
   EXPECT_EQ(rig.integer("priority"), 80);
   const std::string msg = message_of([&] { rig.finish(); });
@@ -39,37 +40,41 @@ TEST(StrictTable, ReadsValuesAndRejectsUnknownKeysWithLine) {
 
 TEST(StrictTable, ParseErrorCarriesFileAndLine) {
   const auto file = write_file("strict2.toml", "a = 1\nb = = 2\n");
-  const std::string msg = message_of([&] { (void)load_toml_file(file); });
+  const std::string msg = message_of([&] { (void)config::load_toml_file(file); });
   EXPECT_NE(msg.find(file.string() + ":2:"), std::string::npos) << msg;
 }
 
 TEST(StrictTable, MissingFileIsAConfigError) {
-  const std::string msg = message_of([] { (void)load_toml_file("/nonexistent/rig.toml"); });
+  const std::string msg = message_of([] { (void)config::load_toml_file("/nonexistent/rig.toml"); });
   EXPECT_EQ(msg, "/nonexistent/rig.toml:1: cannot read file (missing or not a regular file)");
 }
 
 TEST(StrictTable, RangeAndChoiceErrors) {
   const auto file = write_file("strict3.toml", "period_s = -1\npolicy = \"sometimes\"\n");
-  const toml::table root = load_toml_file(file);
-  StrictTable t(root, file, "[rig]");
+  const toml::table root = config::load_toml_file(file);
+  config::StrictTable t(root, file, "[rig]");
   EXPECT_EQ(message_of([&] { (void)t.number_in("period_s", 1e-6, 1.0); }),
             file.string() + ":1: [rig] period_s: value -1 out of range [1e-06, 1]");
-  EXPECT_EQ(message_of([&] { (void)t.choice("policy", "skip", {"skip", "catch-up"}); }),
-            file.string() + ":2: [rig] policy: unknown value 'sometimes' (expected one of: skip, catch-up)");
+  EXPECT_EQ(message_of([&] {
+              (void)t.choice("policy", "skip", {"skip", "catch-up"});
+            }),
+            file.string() +
+                ":2: [rig] policy: unknown value 'sometimes' (expected one of: skip, catch-up)");
   EXPECT_EQ(message_of([&] { (void)t.number("absent"); }),
             file.string() + ":1: [rig] absent: missing required key");
 }
 
 TEST(StrictTable, FallbacksAndArrays) {
-  const auto file = write_file("strict4.toml", "xs = [1, 2.5, 3]\n[[axle]]\nm = 1\n[[axle]]\nm = 2\n");
-  const toml::table root = load_toml_file(file);
-  StrictTable t(root, file, "top");
+  const auto file =
+      write_file("strict4.toml", "xs = [1, 2.5, 3]\n[[axle]]\nm = 1\n[[axle]]\nm = 2\n");
+  const toml::table root = config::load_toml_file(file);
+  config::StrictTable t(root, file, "top");
   EXPECT_EQ(t.numbers("xs"), (std::vector<double>{1, 2.5, 3}));
   EXPECT_DOUBLE_EQ(t.number("missing", 7.0), 7.0);
   auto axles = t.tables("axle");
   ASSERT_EQ(axles.size(), 2u);
   EXPECT_DOUBLE_EQ(axles[1].number("m"), 2.0);
-  EXPECT_THROW(axles[0].finish(), ConfigError);  // m of axle 0 was never read
+  EXPECT_THROW(axles[0].finish(), config::ConfigError);  // m of axle 0 was never read
 }
 
 TEST(AllocationCounter, CountsThisThreadsAllocations) {

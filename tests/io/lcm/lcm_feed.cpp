@@ -144,7 +144,7 @@ int run_threaded(Sinks& sinks, std::uint64_t cycles, double period_s,
 }  // namespace
 
 int main(int argc, char** argv) {
-  rig::io::LcmSettings settings;
+  rig::io::lcm::LcmSettings settings;
   std::string url = settings.url;
   std::string log;
   double duration_s = 2.0;
@@ -191,8 +191,8 @@ int main(int argc, char** argv) {
   settings.url = url;
 
   Sinks sinks;
-  if (url != "none") sinks.push_back(rig::io::make_lcm_publisher(settings));
-  if (!log.empty()) sinks.push_back(rig::io::make_lcm_log_writer(log, settings));
+  if (url != "none") sinks.push_back(rig::io::lcm::make_lcm_publisher(settings));
+  if (!log.empty()) sinks.push_back(rig::io::lcm::make_lcm_log_writer(log, settings));
 
   rig::io::RunInfo info;
   info.period_s = period_s;

@@ -24,7 +24,7 @@ std::filesystem::path temp_path(const std::string& name) {
 
 /// Writes `cycles` synthetic snapshots through the log writer.
 void write_log(const std::filesystem::path& file, std::uint64_t cycles) {
-  LcmLogWriter writer(file.string(), LcmSettings{});
+  lcm::LcmLogWriter writer(file.string(), lcm::LcmSettings{});
   RunInfo info;
   info.period_s = kPeriod;
   writer.start(info);
@@ -100,7 +100,7 @@ TEST(LcmLogWriter, WritesAnEventLogThatLcmReadsBack) {
 }
 
 TEST(LcmLogWriter, UnwritablePathThrows) {
-  EXPECT_THROW(LcmLogWriter("/nonexistent-dir/x.lcm", LcmSettings{}), std::runtime_error);
+  EXPECT_THROW(lcm::LcmLogWriter("/nonexistent-dir/x.lcm", lcm::LcmSettings{}), std::runtime_error);
 }
 
 TEST(Log2Csv, ReproducesKnownValuesAndFlattensArrays) {

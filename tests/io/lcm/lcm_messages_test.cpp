@@ -13,7 +13,7 @@ namespace {
 constexpr double kPeriod = 0.001;
 
 template <typename Message>
-Message decode(const EncodedMessage& m) {
+Message decode(const lcm::EncodedMessage& m) {
   Message msg;
   EXPECT_GE(msg.decode(m.data, 0, static_cast<int>(m.size)), 0);
   return msg;
@@ -31,10 +31,10 @@ RunInfo run_info() {
 }
 
 TEST(SnapshotEncoder, StateRoundTripsEveryField) {
-  SnapshotEncoder encoder(LcmSettings{});
+  lcm::SnapshotEncoder encoder(lcm::LcmSettings{});
   encoder.start(run_info());
   const Snapshot s = test::make_synthetic_snapshot(1234, kPeriod);
-  EncodedMessage out[3];
+  lcm::EncodedMessage out[3];
   const std::size_t n = encoder.encode(s, 0, out);
   ASSERT_EQ(n, 1u);  // cycle 1234: state only (signals every 10th, status every 100th)
   EXPECT_EQ(*out[0].channel, "RIG_STATE");
@@ -68,11 +68,11 @@ TEST(SnapshotEncoder, StateRoundTripsEveryField) {
 }
 
 TEST(SnapshotEncoder, SignalsAndStatusCarryNamesSourcesCountersAndPercentiles) {
-  LcmSettings settings;
+  lcm::LcmSettings settings;
   settings.channel_prefix = "R2_";
-  SnapshotEncoder encoder(settings);
+  lcm::SnapshotEncoder encoder(settings);
   encoder.start(run_info());
-  EncodedMessage out[3];
+  lcm::EncodedMessage out[3];
   std::size_t n = 0;
   for (std::uint64_t c = 0; c <= 1000; ++c) {
     n = encoder.encode(test::make_synthetic_snapshot(c, kPeriod), c == 1000 ? 3 : 0, out);
@@ -126,9 +126,9 @@ TEST(SnapshotEncoder, SignalsAndStatusCarryNamesSourcesCountersAndPercentiles) {
 }
 
 TEST(SnapshotEncoder, DoesNotAllocateOnceWarm) {
-  SnapshotEncoder encoder(LcmSettings{});
+  lcm::SnapshotEncoder encoder(lcm::LcmSettings{});
   encoder.start(run_info());
-  EncodedMessage out[3];
+  lcm::EncodedMessage out[3];
   for (std::uint64_t c = 0; c < 200; ++c) {
     encoder.encode(test::make_synthetic_snapshot(c, kPeriod), 0, out);
   }
@@ -141,9 +141,9 @@ TEST(SnapshotEncoder, DoesNotAllocateOnceWarm) {
 TEST(LcmPublisher, PublishesEveryDueMessage) {
   // memq:// is LCM's in-process provider: a real lcm_t and lcm_publish, no network needed.
   // (Delivery to an independent subscriber is tests/integration/lcm/, with lcm-logger.)
-  LcmSettings settings;
+  lcm::LcmSettings settings;
   settings.url = "memq://";
-  LcmPublisher publisher(settings);
+  lcm::LcmPublisher publisher(settings);
   publisher.start(run_info());
   ASSERT_TRUE(publisher.active());
   for (std::uint64_t c = 0; c < 100; ++c) {
@@ -156,9 +156,9 @@ TEST(LcmPublisher, PublishesEveryDueMessage) {
 }
 
 TEST(LcmPublisher, BadUrlTurnsItselfOffAndTheRunGoesOn) {
-  LcmSettings settings;
+  lcm::LcmSettings settings;
   settings.url = "nosuchprovider://x";
-  LcmPublisher publisher(settings);
+  lcm::LcmPublisher publisher(settings);
   testing::internal::CaptureStderr();
   publisher.start(run_info());
   const std::string err = testing::internal::GetCapturedStderr();

@@ -10,26 +10,26 @@
 namespace rig::io {
 namespace {
 
-LcmSettings read(const std::string& name, const std::string& toml_text) {
+lcm::LcmSettings read(const std::string& name, const std::string& toml_text) {
   const auto file = std::filesystem::temp_directory_path() / name;
   std::ofstream(file) << toml_text;
-  const toml::table root = load_toml_file(file);
-  StrictTable top(root, file, "top");
-  StrictTable lcm = top.table("lcm");
-  return read_lcm_settings(lcm);
+  const toml::table root = config::load_toml_file(file);
+  config::StrictTable top(root, file, "top");
+  config::StrictTable lcm = top.table("lcm");
+  return lcm::read_lcm_settings(lcm);
 }
 
 std::string error_of(const std::string& name, const std::string& toml_text) {
   try {
     read(name, toml_text);
-  } catch (const ConfigError& e) {
+  } catch (const config::ConfigError& e) {
     return e.what();
   }
   return "";
 }
 
 TEST(LcmSettings, DefaultsWhenTheSectionIsEmpty) {
-  const LcmSettings s = read("lcm_settings_empty.toml", "[lcm]\n");
+  const lcm::LcmSettings s = read("lcm_settings_empty.toml", "[lcm]\n");
   EXPECT_EQ(s.url, "udpm://239.255.76.67:7667?ttl=0");
   EXPECT_EQ(s.state_channel(), "RIG_STATE");
   EXPECT_EQ(s.status_channel(), "RIG_STATUS");
@@ -40,10 +40,10 @@ TEST(LcmSettings, DefaultsWhenTheSectionIsEmpty) {
 }
 
 TEST(LcmSettings, ReadsEveryKey) {
-  const LcmSettings s = read("lcm_settings_all.toml",
-                             "[lcm]\nurl = \"udpm://239.255.76.68:7668?ttl=1\"\n"
-                             "channel_prefix = \"BENCH2_\"\nstate_rate_hz = 500\n"
-                             "status_rate_hz = 2.5\nsignals_rate_hz = 0\n");
+  const lcm::LcmSettings s = read("lcm_settings_all.toml",
+                                  "[lcm]\nurl = \"udpm://239.255.76.68:7668?ttl=1\"\n"
+                                  "channel_prefix = \"BENCH2_\"\nstate_rate_hz = 500\n"
+                                  "status_rate_hz = 2.5\nsignals_rate_hz = 0\n");
   EXPECT_EQ(s.url, "udpm://239.255.76.68:7668?ttl=1");
   EXPECT_EQ(s.state_channel(), "BENCH2_RIG_STATE");
   EXPECT_EQ(s.signals_channel(), "BENCH2_RIG_SIGNALS");
@@ -68,19 +68,20 @@ TEST(LcmSettings, RejectsBadValuesWithFileAndLine) {
 }
 
 TEST(MulticastRoute, ParsesUdpmUrls) {
-  const auto a = parse_udpm_url("udpm://239.255.76.67:7667?ttl=0");
+  const auto a = lcm::parse_udpm_url("udpm://239.255.76.67:7667?ttl=0");
   ASSERT_TRUE(a.has_value());
   EXPECT_EQ(a->group, "239.255.76.67");
   EXPECT_EQ(a->port, 7667);
-  const auto b = parse_udpm_url("udpm://");
+  const auto b = lcm::parse_udpm_url("udpm://");
   ASSERT_TRUE(b.has_value());
   EXPECT_EQ(b->group, "239.255.76.67");
-  EXPECT_FALSE(parse_udpm_url("memq://").has_value());
-  EXPECT_EQ(check_multicast_route("memq://"), "");
+  EXPECT_FALSE(lcm::parse_udpm_url("memq://").has_value());
+  EXPECT_EQ(lcm::check_multicast_route("memq://"), "");
 }
 
 TEST(MulticastRoute, AdviceNamesTheCommand) {
-  EXPECT_NE(multicast_route_advice().find("ip route add 224.0.0.0/4 dev lo"), std::string::npos);
+  EXPECT_NE(lcm::multicast_route_advice().find("ip route add 224.0.0.0/4 dev lo"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -8,11 +8,11 @@ namespace rig::io {
 namespace {
 
 TEST(TimingWindow, NearestRankPercentilesOfOneToThousand) {
-  TimingWindow window;
+  lcm::TimingWindow window;
   window.reset(1000);
   // Pushed in descending order so that the ring order differs from the sorted order.
   for (int i = 1000; i >= 1; --i) window.push(i, 2 * i, i % 100 == 0);
-  const TimingPercentiles p = window.percentiles();
+  const lcm::TimingPercentiles p = window.percentiles();
   EXPECT_EQ(p.cycles, 1000);
   EXPECT_EQ(p.misses, 10);
   EXPECT_EQ(p.lateness_p50_ns, 500);   // ceil(0.5 * 1000) = rank 500
@@ -25,10 +25,10 @@ TEST(TimingWindow, NearestRankPercentilesOfOneToThousand) {
 }
 
 TEST(TimingWindow, KeepsOnlyTheLastCapacityCycles) {
-  TimingWindow window;
+  lcm::TimingWindow window;
   window.reset(10);
   for (int i = 1; i <= 15; ++i) window.push(i, 0, false);  // window holds 6..15
-  const TimingPercentiles p = window.percentiles();
+  const lcm::TimingPercentiles p = window.percentiles();
   EXPECT_EQ(p.cycles, 10);
   EXPECT_EQ(p.lateness_p50_ns, 10);  // rank 5 of 6..15
   EXPECT_EQ(p.lateness_max_ns, 15);
@@ -36,14 +36,14 @@ TEST(TimingWindow, KeepsOnlyTheLastCapacityCycles) {
 }
 
 TEST(TimingWindow, EmptyWindowIsZero) {
-  TimingWindow window;
+  lcm::TimingWindow window;
   window.reset(5);
   EXPECT_EQ(window.percentiles().cycles, 0);
   EXPECT_EQ(window.percentiles().lateness_max_ns, 0);
 }
 
 TEST(RateDivider, DividesTheLoopRate) {
-  RateDivider d;
+  lcm::RateDivider d;
   d.configure(1000.0, 0.001);
   EXPECT_EQ(d.divisor(), 1u);
   d.configure(10.0, 0.001);

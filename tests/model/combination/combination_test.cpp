@@ -13,12 +13,13 @@
 
 #include <gtest/gtest.h>
 
+#include "io/config/combination_file.h"
 #include "io/config/strict_table.h"
+#include "io/config/vehicle_file.h"
 #include "model/combination/combination.h"
 #include "model/combination/force_coupled.h"
 #include "rig/driver/path_driver.h"
-#include "rig/vehicle_config/thread_begin_step_runner.h"
-#include "rig/vehicle_config/vehicle_config.h"
+#include "rig/thread_begin_step_runner.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
 
@@ -30,11 +31,11 @@ constexpr const char* kTractorSemi = RIG_SOURCE_DIR "/config/combinations/tracto
 constexpr const char* kCarTowBarCar = RIG_SOURCE_DIR "/config/combinations/car-towbar-car.toml";
 
 CombinationParams load(const char* file) {
-  const toml::table doc = io::load_toml_file(file);
-  io::StrictTable top(doc, file, "top level");
-  io::StrictTable m = top.table("model");
+  const toml::table doc = io::config::load_toml_file(file);
+  io::config::StrictTable top(doc, file, "top level");
+  io::config::StrictTable m = top.table("model");
   (void)m.string("kind");
-  const vehicle_config::CombinationModelSettings s = vehicle_config::read_combination_model(m);
+  const io::config::CombinationModelSettings s = io::config::read_combination_model(m);
   CombinationParams p;
   p.name = s.name;
   p.units = s.units;
@@ -444,7 +445,7 @@ TEST(Combination, ThreeUnitTruckDollySemitrailerChain) {
   CombinationParams p;
   p.newton = default_combination_newton_params();
   p.units.push_back(
-      vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml"));
+      io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml"));
   vehicle::VehicleParams dolly = semi.units[1];
   dolly.name = "dolly";
   dolly.chassis.mass_kg = 900;
@@ -509,7 +510,7 @@ TEST(Combination, ParallelIsBitwiseSerialAndNoStepAllocates) {
   CombinationParams p = load(kCarTrailer);
   Combination serial(p, 1e-3);
   p.parallel = true;
-  p.begin_step_runner = vehicle_config::make_thread_begin_step_runner;
+  p.begin_step_runner = make_thread_begin_step_runner;
   Combination parallel(p, 1e-3);
   p.parallel = false;
   ForceCoupledCombination spring(p, 1e-3);

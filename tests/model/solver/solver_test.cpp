@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
 
-#include "model/examples/coupled_pendulums/coupled_pendulums.h"
-#include "model/examples/quarter_car/quarter_car.h"
+#include "model/paper/coupled_pendulums.h"
+#include "model/paper/quarter_car.h"
 #include "model/solver/arrowhead_factorization.h"
 #include "model/solver/coupled_stepper.h"
 #include "model/solver/engine.h"
@@ -265,7 +265,7 @@ TEST(MechanicalStepper, SolveMassLeadingEqualsLeadingRowsOfTheFullSolve) {
 
 // ---- finite differences vs analytic Jacobians of the paper blocks ----
 TEST(Jacobians, PendulumAnalyticMatchesFiniteDifference) {
-  examples::Pendulum p(10.0, 1.0, 9.81, 0.7);
+  paper::Pendulum p(10.0, 1.0, 9.81, 0.7);
   Eigen::Matrix<double, 1, 1> y, z, dy_a, dz_a, dy_f, dz_f, w1, w2, q0, q1;
   y << 0.7;
   z << 0.4;
@@ -276,14 +276,14 @@ TEST(Jacobians, PendulumAnalyticMatchesFiniteDifference) {
 }
 
 TEST(Jacobians, QuarterCarBodyAndTireAnalyticMatchFiniteDifference) {
-  const examples::QuarterCarParams params;
-  const examples::QuarterCarTire tire(params.tire, 3900.0, params.wheel_radius_m);
+  const paper::QuarterCarParams params;
+  const paper::QuarterCarTire tire(params.tire, 3900.0, params.wheel_radius_m);
   for (const auto& [v, w, x_e] :
        {std::tuple{10.0, 34.0, 0.004}, std::tuple{0.3, 0.5, -0.002}, std::tuple{5.0, 18.0, 0.0}}) {
     Eigen::Matrix<double, 1, 1> s;
     s << x_e;
     Eigen::Vector2d y(1.0, 0.0), z(v, w);
-    examples::QuarterCarBody body(params, tire, y, z, s);
+    paper::QuarterCarBody body(params, tire, y, z, s);
     Eigen::Matrix2d dy_a, dz_a, dy_f, dz_f;
     Eigen::Vector2d w1, w2, q0, q1;
     ASSERT_TRUE(body.force_jacobians(y, z, dy_a, dz_a));
@@ -291,7 +291,7 @@ TEST(Jacobians, QuarterCarBodyAndTireAnalyticMatchFiniteDifference) {
     EXPECT_LT((dz_a - dz_f).norm(), 1e-4 * dz_a.norm()) << "v=" << v << " w=" << w;
     EXPECT_LT((dy_a - dy_f).norm(), 1e-6);
 
-    examples::TireDeflectionElement el(tire, s, z);
+    paper::TireDeflectionElement el(tire, s, z);
     Eigen::Matrix<double, 1, 1> j_a, j_f, ws, f0, f1;
     ASSERT_TRUE(el.rate_jacobian(s, j_a));
     finite_difference_rate_jacobian<1>(el, s, j_f, ws, f0, f1);
@@ -308,8 +308,8 @@ TEST(ConstraintCoupling, PositionOnlyCriterionLeavesLambdaWrong) {
   NewtonParams loose;
   loose.criterion = NewtonCriterion::kPosition;
   loose.position_tolerance = 1e-4;  // 0.1 mm
-  examples::CoupledPendulums tight_run;
-  examples::CoupledPendulums loose_run({}, loose);
+  paper::CoupledPendulums tight_run;
+  paper::CoupledPendulums loose_run({}, loose);
   double max_force_error = 0, max_g_loose = 0, peak = 0;
   int loose_iterations = 0;
   for (int i = 0; i < 1000; ++i) {
@@ -329,14 +329,14 @@ TEST(ConstraintCoupling, PositionOnlyCriterionLeavesLambdaWrong) {
 }
 
 TEST(ConstraintCoupling, ReportsIterationsResidualAndCap) {
-  NewtonParams capped = examples::default_pendulum_newton_params();
+  NewtonParams capped = paper::default_pendulum_newton_params();
   capped.max_iterations = 1;
-  examples::CoupledPendulums p({}, capped);
+  paper::CoupledPendulums p({}, capped);
   const NewtonReport r = p.step(0.05);
   EXPECT_EQ(r.iterations, 1);
   EXPECT_FALSE(r.converged);
   EXPECT_GT(r.residual, 0.0);
-  examples::CoupledPendulums q;
+  paper::CoupledPendulums q;
   const NewtonReport r2 = q.step(0.05);
   EXPECT_TRUE(r2.converged);
   EXPECT_LE(r2.residual, 1e-7);
@@ -417,8 +417,8 @@ struct DynamicElement final : ForceElement<Eigen::Dynamic> {
 };
 
 TEST(NoAllocation, SolverStepsAllocateNothing) {
-  examples::CoupledPendulums pendulums;
-  examples::QuarterCar car;
+  paper::CoupledPendulums pendulums;
+  paper::QuarterCar car;
   ArrowBlock block;
   MechanicalStepper<Eigen::Dynamic, ArrowheadFactorization> arrow(block,
                                                                   ArrowheadPartition{3, {2, 2}});
@@ -445,7 +445,7 @@ TEST(NoAllocation, SolverStepsAllocateNothing) {
     dyn_stepper.advance(1e-3);
     dyn_stepper_fd.advance(1e-3);
     pendulums.step(1e-3);
-    car.step(1e-3, examples::paper_maneuver_inputs(i * 1e-3 * 10));
+    car.step(1e-3, paper::paper_maneuver_inputs(i * 1e-3 * 10));
     arrow.advance(1e-3);
     arrow.solve_mass_leading(b_lead, x_lead);  // Schur shortcut
     engine.step(1e-3);

@@ -12,18 +12,18 @@
 #include <gtest/gtest.h>
 
 #include "io/config/config_error.h"
+#include "io/config/vehicle_file.h"
 #include "model/solver/finite_difference.h"
 #include "model/vehicle/suspension_kinematics.h"
 #include "model/vehicle/tmeasy.h"
 #include "model/vehicle/vehicle_model.h"
-#include "rig/vehicle_config/vehicle_config.h"
 #include "tests/support/driver_inputs.h"
 
 namespace rig::model::vehicle {
 namespace {
 
 VehicleParams sedan() {
-  return vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+  return io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
 }
 
 Signals driver_inputs() { return test::all_driver_inputs(); }
@@ -117,7 +117,7 @@ TEST(SuspensionKinematics, VehicleFileReadsGeometryAndTables) {
       "grid = { z_min_m = -0.1, z_step_m = 0.1, z_count = 3, u_count = 1 }\n"
       "x_m = [0.0, 0.0, 0.0]\ny_m = [-0.004, 0.0, 0.004]\nalpha_rad = [0.0, 0.0, 0.0]\n"
       "beta_rad = [0.0, 0.0, 0.0]\ngamma_rad = [0.001, 0.0, -0.001]\n");
-  const VehicleParams q = vehicle_config::load_vehicle_file(good);
+  const VehicleParams q = io::config::load_vehicle_file(good);
   ASSERT_EQ(q.axles[1].kinematics.y_m.size(), 3u);
   EXPECT_NEAR(SuspensionKinematics(q).pose(2, 0.05, 0).y_m.value, 0.002, 1e-12);
   const auto bad = sedan_with_rear_kinematics(
@@ -125,9 +125,9 @@ TEST(SuspensionKinematics, VehicleFileReadsGeometryAndTables) {
       "x_m = [0.0, 0.0]\ny_m = [0.0, 0.0, 0.0]\nalpha_rad = [0.0, 0.0, 0.0]\n"
       "beta_rad = [0.0, 0.0, 0.0]\ngamma_rad = [0.0, 0.0, 0.0]\n");
   try {
-    (void)vehicle_config::load_vehicle_file(bad);
+    (void)io::config::load_vehicle_file(bad);
     FAIL() << "no error";
-  } catch (const io::ConfigError& e) {
+  } catch (const io::config::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("rig_kinematics_test.toml:"), std::string::npos)
         << e.what();
     EXPECT_NE(std::string(e.what()).find("x_m"), std::string::npos) << e.what();

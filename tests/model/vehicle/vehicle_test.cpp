@@ -14,11 +14,11 @@
 
 #include <gtest/gtest.h>
 
+#include "io/config/vehicle_file.h"
 #include "model/tire/tmeasy_tire.h"
 #include "model/vehicle/tmeasy.h"
 #include "model/vehicle/vehicle_model.h"
 #include "rig/driver/path_driver.h"
-#include "rig/vehicle_config/vehicle_config.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
 
@@ -26,7 +26,7 @@ namespace rig::model::vehicle {
 namespace {
 
 VehicleParams sedan() {
-  return vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+  return io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
 }
 
 Signals driver_inputs() { return test::all_driver_inputs(); }
@@ -358,7 +358,7 @@ TEST(Vehicle, AnalyticPartialJacobiansMatchFiniteDifferences) {
 TEST(Vehicle, TruckStaticEquilibriumAndGradeHoldAtOneAndTwoMilliseconds) {
   for (double h : {1e-3, 2e-3}) {
     VehicleParams p =
-        vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml");
+        io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml");
     VehicleModel flat(p, h);
     Signals s = driver_inputs();
     s[Signal::kGearRequest] = 0;
@@ -392,9 +392,9 @@ TEST(VehicleConfig, UnknownKeyIsAnErrorWithFileAndLine) {
   const auto file = dir / "typo.toml";
   std::ofstream(file) << text;
   try {
-    (void)vehicle_config::load_vehicle_file(file);
+    (void)io::config::load_vehicle_file(file);
     FAIL() << "no error";
-  } catch (const io::ConfigError& e) {
+  } catch (const io::config::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("typo.toml:"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("cg_hieght_m"), std::string::npos) << e.what();
   }
@@ -501,13 +501,13 @@ TEST(VehicleConfig, ManeuverFilesNameTheirVehicleAndRunAtOneMillisecond) {
   for (const auto& entry :
        std::filesystem::directory_iterator(RIG_SOURCE_DIR "/config/maneuvers")) {
     if (entry.path().extension() != ".toml") continue;
-    const toml::table doc = io::load_toml_file(entry.path());
-    io::StrictTable top(doc, entry.path(), "top level");
-    io::StrictTable model_table = top.table("model");
+    const toml::table doc = io::config::load_toml_file(entry.path());
+    io::config::StrictTable top(doc, entry.path(), "top level");
+    io::config::StrictTable model_table = top.table("model");
     if (entry.path().filename() == "paper-quarter-car.toml") continue;  // the paper's example
     ++files;
     EXPECT_EQ(model_table.string("kind"), "vehicle") << entry.path();
-    const auto settings = vehicle_config::read_vehicle_model(model_table);
+    const auto settings = io::config::read_vehicle_model(model_table);
     model_table.finish();  // no unknown vehicle keys
     VehicleModel m(settings.params, 1e-3);
     m.set_forward_speed(settings.initial_speed_mps);
@@ -520,7 +520,7 @@ TEST(VehicleConfig, ManeuverFilesNameTheirVehicleAndRunAtOneMillisecond) {
 
 TEST(Vehicle, TruckStepSteerSettlesAtOneAndTwoMilliseconds) {
   const VehicleParams p =
-      vehicle_config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml");
+      io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml");
   for (double h : {1e-3, 2e-3}) {
     const StepResult r = step_steer(h, 1.0, p, 60 / 3.6);
     ASSERT_TRUE(std::isfinite(r.yaw_rate_final)) << "h = " << h;

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "model/examples/coupled_pendulums/coupled_pendulums.h"
+#include "model/paper/coupled_pendulums.h"
 #include "rig/paper/paper_runs.h"
 
 namespace rig::paper {
@@ -67,8 +67,8 @@ TEST(PendulumsVsCvode, DeviationShrinksWithTheStepSize) {
 TEST(PendulumsVsCvode, FullImplicitVariantDriftsMore) {
   // Eq. (8) with gravity's Jacobian and q at the predicted angles damps the swing: reported for
   // the record (the paper's listing is the default for this reason).
-  model::examples::CoupledPendulums implicit({}, model::examples::default_pendulum_newton_params(),
-                                             model::examples::PendulumScheme::kImplicit);
+  model::paper::CoupledPendulums implicit({}, model::paper::default_pendulum_newton_params(),
+                                          model::paper::PendulumScheme::kImplicit);
   SpringReference ref;
   double max_df = 0, max_dphi = 0;
   for (int i = 1; i <= 5000; ++i) {

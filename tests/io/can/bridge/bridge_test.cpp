@@ -26,18 +26,18 @@ fs::path write_rig_toml(const std::string& text) {
   return file;
 }
 
-CanSettings settings_from(const fs::path& file) {
-  const toml::table root = load_toml_file(file);
-  StrictTable rig(root, file, "root");
-  StrictTable can = rig.table("can");
-  return read_can_settings(can);
+can::bridge::CanSettings settings_from(const fs::path& file) {
+  const toml::table root = config::load_toml_file(file);
+  config::StrictTable rig(root, file, "root");
+  config::StrictTable can = rig.table("can");
+  return can::bridge::read_can_settings(can);
 }
 
 TEST(CanSettings, ReadsTheCanSectionWithPathsRelativeToTheFile) {
   const fs::path file = write_rig_toml(
       "[can]\ninterface = \"can0\"\nmapping = \"steering-bench.toml\"\n"
       "dbc = \"steering-bench.dbc\"\nkernel_filter = true\n");
-  const CanSettings s = settings_from(file);
+  const can::bridge::CanSettings s = settings_from(file);
   EXPECT_EQ(s.interface, "can0");
   EXPECT_EQ(s.mapping_file.filename(), "steering-bench.toml");
   EXPECT_TRUE(s.mapping_file.is_absolute() || fs::exists(s.mapping_file));
@@ -51,8 +51,8 @@ TEST(CanSettings, UnknownKeyIsAnErrorWithFileAndLine) {
       "[can]\ninterface = \"vcan0\"\nmapping = \"steering-bench.toml\"\nbitrate = 500000\n");
   try {
     (void)settings_from(file);
-    FAIL() << "expected ConfigError";
-  } catch (const ConfigError& e) {
+    FAIL() << "expected config::ConfigError";
+  } catch (const config::ConfigError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("rig.toml:"), std::string::npos) << what;
     EXPECT_NE(what.find("bitrate"), std::string::npos) << what;
@@ -61,26 +61,27 @@ TEST(CanSettings, UnknownKeyIsAnErrorWithFileAndLine) {
 
 TEST(CanSettings, MissingMappingFileIsAnError) {
   const fs::path file = write_rig_toml("[can]\nmapping = \"nope.toml\"\n");
-  EXPECT_THROW((void)settings_from(file), ConfigError);
+  EXPECT_THROW((void)settings_from(file), config::ConfigError);
 }
 
 TEST(MakeCanIo, WithoutSocketCanFailsWithAClearTransportError) {
-  if (can_sockets_available()) GTEST_SKIP() << "this kernel has AF_CAN";
+  if (can::transport::can_sockets_available()) GTEST_SKIP() << "this kernel has AF_CAN";
   const fs::path file =
       write_rig_toml("[can]\ninterface = \"vcan0\"\nmapping = \"steering-bench.toml\"\n");
   try {
-    (void)make_can_io(settings_from(file));
-    FAIL() << "expected TransportError";
-  } catch (const TransportError& e) {
+    (void)can::bridge::make_can_io(settings_from(file));
+    FAIL() << "expected can::transport::TransportError";
+  } catch (const can::transport::TransportError& e) {
     EXPECT_NE(std::string(e.what()).find("--can none"), std::string::npos) << e.what();
   }
 }
 
 TEST(MakeCanIo, OnVcanOpensTheBusAndReportsItUp) {
-  if (!can_sockets_available()) GTEST_SKIP() << "needs AF_CAN and vcan0 (run via with-vcan)";
+  if (!can::transport::can_sockets_available())
+    GTEST_SKIP() << "needs AF_CAN and vcan0 (run via with-vcan)";
   const fs::path file = write_rig_toml(
       "[can]\ninterface = \"vcan0\"\nmapping = \"steering-bench.toml\"\nkernel_filter = true\n");
-  const auto io = make_can_io(settings_from(file));
+  const auto io = can::bridge::make_can_io(settings_from(file));
   ASSERT_NE(io, nullptr);
   IoCounters c;
   io->read_counters(c);

@@ -19,11 +19,11 @@ BS_:
 BU_: A B
 )";
 
-/// The ConfigError message of parsing `text`, or "" if it parsed.
+/// The config::ConfigError message of parsing `text`, or "" if it parsed.
 std::string error_of(const std::string& text) {
   try {
     (void)parse_dbc(text, "t.dbc");
-  } catch (const ConfigError& e) {
+  } catch (const config::ConfigError& e) {
     return e.what();
   }
   return "";
@@ -230,7 +230,7 @@ const BadInput kBadInputs[] = {
 INSTANTIATE_TEST_SUITE_P(Malformed, DbcParserErrors, ::testing::ValuesIn(kBadInputs));
 
 TEST(DbcParser, MissingFileIsConfigError) {
-  EXPECT_THROW((void)load_dbc("/nonexistent/x.dbc"), ConfigError);
+  EXPECT_THROW((void)load_dbc("/nonexistent/x.dbc"), config::ConfigError);
 }
 
 }  // namespace

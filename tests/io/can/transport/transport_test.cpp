@@ -12,8 +12,8 @@
 namespace rig::io::can {
 namespace {
 
-TransportFrame frame_with_id(std::uint32_t id) {
-  TransportFrame f;
+can::transport::TransportFrame frame_with_id(std::uint32_t id) {
+  can::transport::TransportFrame f;
   f.id = id;
   f.len = 1;
   f.data[0] = static_cast<std::uint8_t>(id);
@@ -21,13 +21,13 @@ TransportFrame frame_with_id(std::uint32_t id) {
 }
 
 TEST(SendRetryQueue, RetriesEachFrameOnceInOrderThenForgetsIt) {
-  SendRetryQueue q;
+  can::transport::SendRetryQueue q;
   ASSERT_TRUE(q.push(frame_with_id(1)));
   ASSERT_TRUE(q.push(frame_with_id(2)));
   ASSERT_TRUE(q.push(frame_with_id(3)));
   std::vector<std::uint32_t> offered;
   // The kernel accepts 1 and 3, refuses 2 again: 2 is dropped (refused count 1).
-  const std::size_t refused = q.retry_all([&](const TransportFrame& f) {
+  const std::size_t refused = q.retry_all([&](const can::transport::TransportFrame& f) {
     offered.push_back(f.id);
     return f.id != 2;
   });
@@ -36,7 +36,7 @@ TEST(SendRetryQueue, RetriesEachFrameOnceInOrderThenForgetsIt) {
   EXPECT_EQ(q.size(), 0u);
   // Nothing is offered a second time.
   offered.clear();
-  EXPECT_EQ(q.retry_all([&](const TransportFrame& f) {
+  EXPECT_EQ(q.retry_all([&](const can::transport::TransportFrame& f) {
     offered.push_back(f.id);
     return true;
   }),
@@ -45,25 +45,25 @@ TEST(SendRetryQueue, RetriesEachFrameOnceInOrderThenForgetsIt) {
 }
 
 TEST(SendRetryQueue, RefusesBeyondCapacity) {
-  SendRetryQueue q;
-  for (std::size_t i = 0; i < SendRetryQueue::kCapacity; ++i) {
+  can::transport::SendRetryQueue q;
+  for (std::size_t i = 0; i < can::transport::SendRetryQueue::kCapacity; ++i) {
     ASSERT_TRUE(q.push(frame_with_id(static_cast<std::uint32_t>(i))));
   }
   EXPECT_FALSE(q.push(frame_with_id(999)));
-  EXPECT_EQ(q.clear(), SendRetryQueue::kCapacity);
+  EXPECT_EQ(q.clear(), can::transport::SendRetryQueue::kCapacity);
   EXPECT_EQ(q.size(), 0u);
 }
 
 TEST(SocketCanTransport, ClearErrorWithoutSocketCan) {
   std::string why;
-  if (can_sockets_available(&why)) GTEST_SKIP() << "this kernel has AF_CAN";
+  if (can::transport::can_sockets_available(&why)) GTEST_SKIP() << "this kernel has AF_CAN";
   EXPECT_NE(why.find("socket(PF_CAN"), std::string::npos) << why;
-  TransportSettings settings;
+  can::transport::TransportSettings settings;
   settings.interface = "vcan0";
   try {
-    SocketCanTransport transport(settings);
-    FAIL() << "expected TransportError";
-  } catch (const TransportError& e) {
+    can::transport::SocketCanTransport transport(settings);
+    FAIL() << "expected can::transport::TransportError";
+  } catch (const can::transport::TransportError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("no SocketCAN"), std::string::npos) << what;
     EXPECT_NE(what.find("--can none"), std::string::npos) << what;
@@ -72,14 +72,14 @@ TEST(SocketCanTransport, ClearErrorWithoutSocketCan) {
 }
 
 TEST(SocketCanTransport, RejectsBadInterfaceNameOrFilter) {
-  if (!can_sockets_available()) GTEST_SKIP() << "needs AF_CAN";
-  TransportSettings settings;
+  if (!can::transport::can_sockets_available()) GTEST_SKIP() << "needs AF_CAN";
+  can::transport::TransportSettings settings;
   settings.interface = "a-name-far-too-long-for-ifreq";
-  EXPECT_THROW(SocketCanTransport{settings}, TransportError);
+  EXPECT_THROW(can::transport::SocketCanTransport{settings}, can::transport::TransportError);
   settings.interface = "vcan0";
   settings.use_filter = true;
   settings.filter_ids = {0x800};
-  EXPECT_THROW(SocketCanTransport{settings}, TransportError);
+  EXPECT_THROW(can::transport::SocketCanTransport{settings}, can::transport::TransportError);
 }
 
 }  // namespace

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "io/can/bridge/can_bridge.h"
-#include "io/can/dbc/checksum.h"
+#include "io/can/mapping/checksum.h"
 #include "tests/io/can/vcan/vcan_support.h"
 #include "tests/support/alloc_counter.h"
 
@@ -43,10 +43,12 @@ std::string out_dir() {
   return dir;
 }
 
-std::unique_ptr<CanBridge> make_bridge(const char* ifname, bool kernel_filter = false) {
-  TransportSettings t;
+std::unique_ptr<can::bridge::CanBridge> make_bridge(const char* ifname,
+                                                    bool kernel_filter = false) {
+  can::transport::TransportSettings t;
   t.interface = ifname;
-  return std::make_unique<CanBridge>(load_can_config(mapping_file()), t, kernel_filter);
+  return std::make_unique<can::bridge::CanBridge>(can::mapping::load_can_config(mapping_file()), t,
+                                                  kernel_filter);
 }
 
 model::Signals can_inputs() {
@@ -77,7 +79,7 @@ class Loop {
   std::int64_t k_ = 0;
 };
 
-IoCounters counters_of(const CanBridge& b) {
+IoCounters counters_of(const can::bridge::CanBridge& b) {
   IoCounters c;
   b.read_counters(c);
   return c;
@@ -102,10 +104,10 @@ double expected_assist(double torsion_nm, double speed_mps) {
 
 /// Marker handshake so that `candump` is known to listen before the run starts.
 bool sync_candump(Child& candump, const char* ifname) {
-  TransportSettings t;
+  can::transport::TransportSettings t;
   t.interface = ifname;
-  SocketCanTransport tx(t);
-  TransportFrame marker;
+  can::transport::SocketCanTransport tx(t);
+  can::transport::TransportFrame marker;
   marker.id = 0x7FF;
   for (int i = 0; i < 400; ++i) {
     tx.send(marker);
@@ -140,7 +142,7 @@ TEST(BridgeVcan, RecordedTrafficHasRatesCountersChecksumsAndValues) {
     }
     allocations = count.count();
   }
-  EXPECT_EQ(allocations, 0u) << "CanBridge::receive/transmit allocated on the RT path";
+  EXPECT_EQ(allocations, 0u) << "can::bridge::CanBridge::receive/transmit allocated on the RT path";
   // Let candump catch up with the last frames, then stop it.
   const auto sent = counters_of(*bridge).frames_sent;
   std::size_t rig_lines = 0;
@@ -261,7 +263,7 @@ TEST(BridgeVcan, MisbehavingEcusAreCountedAndRejectedOrClamped) {
   for (int i = 0; i < 3; ++i)
     ecus.push_back(std::make_unique<Child>(ecu_command(ifs[i], modes[i])));
   for (auto& e : ecus) ASSERT_TRUE(wait_ready(*e));
-  std::vector<std::unique_ptr<CanBridge>> bridges;
+  std::vector<std::unique_ptr<can::bridge::CanBridge>> bridges;
   for (const char* i : ifs) bridges.push_back(make_bridge(i));
   std::vector<model::Signals> in(3, can_inputs());
   model::Signals out{};
@@ -379,21 +381,21 @@ TEST(BridgeVcan, ReplayedEcuTrafficGivesTheSameResultsTwice) {
   std::size_t lines = 0;
   while (std::getline(check, line)) ++lines;
   ASSERT_GE(lines, 50u);
-  const CanConfig config = load_can_config(mapping_file());
+  const can::mapping::CanConfig config = can::mapping::load_can_config(mapping_file());
   auto run = [&](std::vector<double>& assist, IoCounters& c) {
-    RxProcessor rx(config);
-    TransportSettings t;
+    can::mapping::RxProcessor rx(config);
+    can::transport::TransportSettings t;
     t.interface = "vcan1";
-    SocketCanTransport transport(t);
+    can::transport::SocketCanTransport transport(t);
     model::Signals s{};
     rx.reset(0, s);
     Child player("canplayer -I " + log + " vcan1=vcan0");
     std::int64_t k = 0;
     auto drain = [&] {
-      transport.drain([&](const TransportFrame& f) {
+      transport.drain([&](const can::transport::TransportFrame& f) {
         // Frame k at a nominal 10 ms spacing: results depend on the data, not on arrival time.
         if (rx.on_frame(f.id, f.extended, f.data.data(), f.len, ++k * 10'000'000, s, c) ==
-            RxResult::kAccepted) {
+            can::mapping::RxResult::kAccepted) {
           assist.push_back(s[Signal::kAssistTorque]);
         }
       });
@@ -426,10 +428,10 @@ TEST(BridgeVcan, EcuToRigToEcuLatency) {
   // "model" echoes assist into the torsion bar torque; an observer socket timestamps both frames
   // in the kernel. Latency = first RIG_SteeringWheel frame carrying the value - EPS frame.
   auto bridge = make_bridge("vcan0");
-  TransportSettings ts;
+  can::transport::TransportSettings ts;
   ts.interface = "vcan0";
-  SocketCanTransport observer(ts);
-  SocketCanTransport ecu(ts);
+  can::transport::SocketCanTransport observer(ts);
+  can::transport::SocketCanTransport ecu(ts);
   model::Signals in = can_inputs();
   model::Signals out{};
   std::vector<double> latencies_ms;
@@ -444,14 +446,14 @@ TEST(BridgeVcan, EcuToRigToEcuLatency) {
     if (loop.cycles() % 53 == 0 && pending_raw == 0) {
       value_index = value_index % 20 + 1;
       const int raw = value_index * 25;  // 0.25 .. 5 N m, distinct from the last
-      TransportFrame f;
+      can::transport::TransportFrame f;
       f.id = 0x200;
       f.len = 8;
       f.data[0] = static_cast<std::uint8_t>(raw & 0xFF);
       f.data[1] = static_cast<std::uint8_t>(raw >> 8);
       f.data[6] = counter;
       counter = static_cast<std::uint8_t>((counter + 1) % 16);
-      f.data[7] = crc8_sae_j1850(f.data.data(), 7);
+      f.data[7] = can::mapping::crc8_sae_j1850(f.data.data(), 7);
       ecu.send(f);
       pending_raw = raw;
       sent_ts = 0;
@@ -459,7 +461,7 @@ TEST(BridgeVcan, EcuToRigToEcuLatency) {
     bridge->receive(t, in);
     out[Signal::kTorsionBarTorque] = in[Signal::kAssistTorque];  // the "model"
     bridge->transmit(t, out);
-    observer.drain([&](const TransportFrame& f) {
+    observer.drain([&](const can::transport::TransportFrame& f) {
       if (f.id == 0x200 && pending_raw != 0 && sent_ts == 0) sent_ts = f.rx_realtime_ns;
       if (f.id == 0x100 && pending_raw != 0 && sent_ts != 0) {
         int tbt = f.data[4] | ((f.data[5] & 0x0F) << 8);

@@ -11,8 +11,8 @@
 #include <string>
 
 #include "io/can/bridge/can_bridge.h"
+#include "io/config/vehicle_file.h"
 #include "model/vehicle/vehicle_model.h"
-#include "rig/vehicle_config/vehicle_config.h"
 #include "tests/io/can/vcan/vcan_support.h"
 
 namespace rig::io::can {
@@ -46,19 +46,19 @@ TEST(ClosedLoopVcan, AssistFromVirtualEcuLowersTorsionBarTorqueByTheBoostRatio) 
   ASSERT_TRUE(ecu_assist.wait_for_line(ready, 90000));
   ASSERT_TRUE(ecu_zero.wait_for_line(ready, 90000));
 
-  const auto params = vehicle_config::load_vehicle_file(src + "/config/vehicles/sedan.toml");
+  const auto params = io::config::load_vehicle_file(src + "/config/vehicles/sedan.toml");
   constexpr double kSpeed = 60 / 3.6;
   model::vehicle::VehicleModel with(params, 1e-3);
   model::vehicle::VehicleModel without(params, 1e-3);
   with.set_forward_speed(kSpeed);
   without.set_forward_speed(kSpeed);
-  TransportSettings t0;
+  can::transport::TransportSettings t0;
   t0.interface = "vcan0";
-  TransportSettings t1;
+  can::transport::TransportSettings t1;
   t1.interface = "vcan1";
   const std::string mapping = src + "/config/can/steering-bench.toml";
-  CanBridge bridge_with(load_can_config(mapping), t0, false);
-  CanBridge bridge_without(load_can_config(mapping), t1, false);
+  can::bridge::CanBridge bridge_with(can::mapping::load_can_config(mapping), t0, false);
+  can::bridge::CanBridge bridge_without(can::mapping::load_can_config(mapping), t1, false);
   model::Signals s_with = driver_inputs();
   model::Signals s_without = driver_inputs();
   for (auto* s : {&s_with, &s_without}) {

@@ -40,20 +40,21 @@ using test::sleep_ms;
 
 /// Drains and services `transport` until `done()` or `timeout_ms`; collects frames.
 template <class Done>
-bool cycle_until(SocketCanTransport& transport, std::vector<TransportFrame>& got, Done done,
+bool cycle_until(can::transport::SocketCanTransport& transport,
+                 std::vector<can::transport::TransportFrame>& got, Done done,
                  int timeout_ms = 5000) {
   const std::int64_t end = monotonic_ns() + std::int64_t{timeout_ms} * 1'000'000;
   while (!done()) {
     if (monotonic_ns() > end) return false;
     transport.service(monotonic_ns());
-    transport.drain([&](const TransportFrame& f) { got.push_back(f); });
+    transport.drain([&](const can::transport::TransportFrame& f) { got.push_back(f); });
     sleep_ms(1);
   }
   return true;
 }
 
-TransportSettings settings_for(const char* ifname) {
-  TransportSettings s;
+can::transport::TransportSettings settings_for(const char* ifname) {
+  can::transport::TransportSettings s;
   s.interface = ifname;
   return s;
 }
@@ -73,13 +74,13 @@ int raw_socket(const char* ifname) {
 
 TEST(TransportVcan, ReceivesCansendFramesClassicExtendedAndFdWithKernelTimestamps) {
   RIG_REQUIRE_VCAN();
-  SocketCanTransport transport(settings_for("vcan0"));
+  can::transport::SocketCanTransport transport(settings_for("vcan0"));
   ASSERT_EQ(transport.state(), BusState::kUp);
   const std::int64_t before = test::realtime_ns();
   ASSERT_EQ(sh("cansend vcan0 123#DEADBEEF && cansend vcan0 1ABCDEF0#0102 && "
                "cansend vcan0 456##1.0102030405060708090A0B0C"),
             0);
-  std::vector<TransportFrame> got;
+  std::vector<can::transport::TransportFrame> got;
   ASSERT_TRUE(cycle_until(transport, got, [&] { return got.size() >= 3; }));
   const std::int64_t after = test::realtime_ns();
   ASSERT_EQ(got.size(), 3u);
@@ -106,10 +107,10 @@ TEST(TransportVcan, ReceivesCansendFramesClassicExtendedAndFdWithKernelTimestamp
 
 TEST(TransportVcan, SentFramesAppearInCandump) {
   RIG_REQUIRE_VCAN();
-  SocketCanTransport transport(settings_for("vcan0"));
+  can::transport::SocketCanTransport transport(settings_for("vcan0"));
   Child candump("candump -L vcan0");
   // Synchronise: repeat a marker frame until candump shows it (it is listening from then on).
-  TransportFrame marker;
+  can::transport::TransportFrame marker;
   marker.id = 0x7FF;
   marker.len = 0;
   bool synced = false;
@@ -119,23 +120,23 @@ TEST(TransportVcan, SentFramesAppearInCandump) {
         [](const std::string& l) { return l.find("7FF#") != std::string::npos; }, 50);
   }
   ASSERT_TRUE(synced) << "candump never showed the marker";
-  TransportFrame classic;
+  can::transport::TransportFrame classic;
   classic.id = 0x321;
   classic.len = 3;
   classic.data = {0x01, 0x02, 0x03};
-  TransportFrame ext;
+  can::transport::TransportFrame ext;
   ext.id = 0x18FEF100;
   ext.extended = true;
   ext.len = 8;
   for (std::uint8_t i = 0; i < 8; ++i) ext.data[i] = static_cast<std::uint8_t>(0xA0 + i);
-  TransportFrame fd;
+  can::transport::TransportFrame fd;
   fd.id = 0x222;
   fd.fd = true;
   fd.len = 16;
   for (std::uint8_t i = 0; i < 16; ++i) fd.data[i] = i;
-  EXPECT_EQ(transport.send(classic), SendStatus::kSent);
-  EXPECT_EQ(transport.send(ext), SendStatus::kSent);
-  EXPECT_EQ(transport.send(fd), SendStatus::kSent);
+  EXPECT_EQ(transport.send(classic), can::transport::SendStatus::kSent);
+  EXPECT_EQ(transport.send(ext), can::transport::SendStatus::kSent);
+  EXPECT_EQ(transport.send(fd), can::transport::SendStatus::kSent);
   auto has = [](const char* text) {
     return [text](const std::string& l) { return l.find(text) != std::string::npos; };
   };
@@ -154,7 +155,7 @@ TEST(TransportVcan, SentFramesAppearInCandump) {
 
 TEST(TransportVcan, ErrorFramesAreCountedNotDelivered) {
   RIG_REQUIRE_VCAN();
-  SocketCanTransport transport(settings_for("vcan0"));
+  can::transport::SocketCanTransport transport(settings_for("vcan0"));
   const int fd = raw_socket("vcan0");
   ASSERT_GE(fd, 0);
   can_frame err{};
@@ -167,7 +168,7 @@ TEST(TransportVcan, ErrorFramesAreCountedNotDelivered) {
   data.len = 1;
   ASSERT_EQ(write(fd, &data, sizeof(data)), CAN_MTU);
   close(fd);
-  std::vector<TransportFrame> got;
+  std::vector<can::transport::TransportFrame> got;
   ASSERT_TRUE(cycle_until(
       transport, got, [&] { return got.size() >= 1 && transport.counters().error_frames >= 5; }));
   EXPECT_EQ(transport.counters().error_frames, 5u);
@@ -177,15 +178,15 @@ TEST(TransportVcan, ErrorFramesAreCountedNotDelivered) {
 
 TEST(TransportVcan, KernelFilterPassesOnlyConfiguredIds) {
   RIG_REQUIRE_VCAN();
-  TransportSettings s = settings_for("vcan0");
+  can::transport::TransportSettings s = settings_for("vcan0");
   s.use_filter = true;
   s.filter_ids = {0x123};
   s.extended_filter_ids = {0x1ABCDEF0};
-  SocketCanTransport transport(s);
+  can::transport::SocketCanTransport transport(s);
   ASSERT_EQ(sh("cansend vcan0 124#01 && cansend vcan0 123#02 && cansend vcan0 00000123#03 && "
                "cansend vcan0 1ABCDEF0#04 && cansend vcan0 7FF#05"),
             0);
-  std::vector<TransportFrame> got;
+  std::vector<can::transport::TransportFrame> got;
   cycle_until(transport, got, [&] { return got.size() >= 2; });
   // A little longer: anything else that leaked through would show up now.
   cycle_until(
@@ -198,8 +199,8 @@ TEST(TransportVcan, KernelFilterPassesOnlyConfiguredIds) {
 
 TEST(TransportVcan, CangenFloodEveryFrameReceivedOrCountedAsKernelDrop) {
   RIG_REQUIRE_VCAN();
-  TransportSettings s = settings_for("vcan0");
-  SocketCanTransport transport(s);
+  can::transport::TransportSettings s = settings_for("vcan0");
+  can::transport::SocketCanTransport transport(s);
   constexpr int kFrames = 20000;
   const std::uint64_t backlog_drops_before = device_rx_dropped("vcan0");
   // Maximal rate (-g 0), random ids, lengths, data; classic and FD (-f), extended mixed in (-e).
@@ -207,7 +208,7 @@ TEST(TransportVcan, CangenFloodEveryFrameReceivedOrCountedAsKernelDrop) {
   Child gen2("cangen vcan0 -g 0 -e -f -I r -L r -D r -n 10000");
   std::uint64_t handed = 0;
   std::uint64_t sentinels = 0;
-  const auto count = [&](const TransportFrame& f) {
+  const auto count = [&](const can::transport::TransportFrame& f) {
     ++handed;
     // Random flood frames can carry id 0x555 too: the sentinel is told by its payload.
     constexpr std::array<std::uint8_t, 8> kSentinel{0xDE, 0xAD, 0xBE, 0xEF, 0xCA, 0xFE, 0xF0, 0x0D};
@@ -256,20 +257,20 @@ TEST(TransportVcan, CangenFloodEveryFrameReceivedOrCountedAsKernelDrop) {
 
 TEST(TransportVcan, InterfaceDownThenUpIsSurvivedAndResumes) {
   RIG_REQUIRE_VCAN();
-  SocketCanTransport transport(settings_for("vcan0"));
-  std::vector<TransportFrame> got;
+  can::transport::SocketCanTransport transport(settings_for("vcan0"));
+  std::vector<can::transport::TransportFrame> got;
   ASSERT_EQ(sh("ip link set vcan0 down"), 0);
   EXPECT_TRUE(cycle_until(transport, got, [&] {
-    TransportFrame probe;
+    can::transport::TransportFrame probe;
     probe.id = 0x10;
     transport.send(probe);
     return transport.state() == BusState::kDown;
   })) << "bus never flagged down";
   EXPECT_EQ(transport.counters().bus_down_events, 1u);
   const auto dropped = transport.counters().send_dropped;
-  TransportFrame f;
+  can::transport::TransportFrame f;
   f.id = 0x11;
-  EXPECT_EQ(transport.send(f), SendStatus::kDropped);
+  EXPECT_EQ(transport.send(f), can::transport::SendStatus::kDropped);
   EXPECT_EQ(transport.counters().send_dropped, dropped + 1);
   // Still down for a while: stays down, no reopen.
   cycle_until(
@@ -287,8 +288,8 @@ TEST(TransportVcan, InterfaceDownThenUpIsSurvivedAndResumes) {
 
 TEST(TransportVcan, InterfaceDeletedAndRecreatedIsReopenedWithoutAllocation) {
   RIG_REQUIRE_VCAN();
-  SocketCanTransport transport(settings_for("vcan1"));
-  std::vector<TransportFrame> got;
+  can::transport::SocketCanTransport transport(settings_for("vcan1"));
+  std::vector<can::transport::TransportFrame> got;
   got.reserve(64);
   ASSERT_EQ(sh("ip link del dev vcan1"), 0);
   std::uint64_t allocations = 0;
@@ -297,8 +298,8 @@ TEST(TransportVcan, InterfaceDeletedAndRecreatedIsReopenedWithoutAllocation) {
     const std::int64_t end = monotonic_ns() + 5'000'000'000;
     while (transport.state() == BusState::kUp && monotonic_ns() < end) {
       transport.service(monotonic_ns());
-      transport.drain([&](const TransportFrame& f) { got.push_back(f); });
-      TransportFrame probe;
+      transport.drain([&](const can::transport::TransportFrame& f) { got.push_back(f); });
+      can::transport::TransportFrame probe;
       probe.id = 0x10;
       transport.send(probe);
       sleep_ms(1);
@@ -312,7 +313,7 @@ TEST(TransportVcan, InterfaceDeletedAndRecreatedIsReopenedWithoutAllocation) {
     const std::int64_t end = monotonic_ns() + 5'000'000'000;
     while (transport.state() != BusState::kUp && monotonic_ns() < end) {
       transport.service(monotonic_ns());
-      transport.drain([&](const TransportFrame& f) { got.push_back(f); });
+      transport.drain([&](const can::transport::TransportFrame& f) { got.push_back(f); });
       sleep_ms(1);
     }
     allocations += count.count();
@@ -327,19 +328,19 @@ TEST(TransportVcan, InterfaceDeletedAndRecreatedIsReopenedWithoutAllocation) {
 TEST(TransportVcan, DownInterfaceAtStartIsFlaggedDownThenOpened) {
   RIG_REQUIRE_VCAN();
   ASSERT_EQ(sh("ip link set vcan1 down"), 0);
-  SocketCanTransport transport(settings_for("vcan1"));
+  can::transport::SocketCanTransport transport(settings_for("vcan1"));
   EXPECT_EQ(transport.state(), BusState::kDown);
   ASSERT_EQ(sh("ip link set vcan1 up"), 0);
-  std::vector<TransportFrame> got;
+  std::vector<can::transport::TransportFrame> got;
   EXPECT_TRUE(cycle_until(transport, got, [&] { return transport.state() == BusState::kUp; }));
 }
 
 TEST(TransportVcan, MissingInterfaceIsAClearLoadTimeError) {
   RIG_REQUIRE_VCAN();
   try {
-    SocketCanTransport transport(settings_for("vcan9"));
-    FAIL() << "expected TransportError";
-  } catch (const TransportError& e) {
+    can::transport::SocketCanTransport transport(settings_for("vcan9"));
+    FAIL() << "expected can::transport::TransportError";
+  } catch (const can::transport::TransportError& e) {
     EXPECT_NE(std::string(e.what()).find("vcan9' does not exist"), std::string::npos) << e.what();
   }
 }

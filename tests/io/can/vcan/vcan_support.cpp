@@ -20,7 +20,7 @@ namespace rig::test {
 
 std::string vcan_unavailable_reason() {
   std::string why;
-  if (!io::can::can_sockets_available(&why)) return why;
+  if (!io::can::transport::can_sockets_available(&why)) return why;
   for (const char* name : {"vcan0", "vcan1"}) {
     if (if_nametoindex(name) == 0) return std::string("no interface ") + name;
   }

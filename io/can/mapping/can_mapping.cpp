@@ -1,0 +1,200 @@
+#include "io/can/mapping/can_mapping.h"
+
+#include <cmath>
+#include <numbers>
+#include <string_view>
+
+#include "io/can/dbc/dbc_parser.h"
+#include "io/can/dbc/signal_codec.h"
+
+namespace rig::io::can::mapping {
+namespace {
+
+std::size_t message_index(config::StrictTable& t, const dbc::Database& db) {
+  const std::string name = t.string("message");
+  for (std::size_t i = 0; i < db.messages.size(); ++i) {
+    if (db.messages[i].name == name) return i;
+  }
+  throw t.error("message", "no message '" + name + "' in " + db.file);
+}
+
+std::size_t signal_index(config::StrictTable& t, std::string_view key, const dbc::MessageDef& m) {
+  const std::string name = t.string(key);
+  for (std::size_t i = 0; i < m.signals.size(); ++i) {
+    if (m.signals[i].name == name) return i;
+  }
+  throw t.error(key, "no signal '" + name + "' in message " + m.name);
+}
+
+/// model = dbc * scale for each named conversion.
+double named_scale(config::StrictTable& t) {
+  const std::string c = t.choice(
+      "convert", "none",
+      {"none", "deg_to_rad", "kph_to_mps", "bar_to_pa", "rpm_to_radps", "percent_to_ratio"});
+  if (c == "deg_to_rad") return std::numbers::pi / 180.0;
+  if (c == "kph_to_mps") return 1.0 / 3.6;
+  if (c == "bar_to_pa") return 1e5;
+  if (c == "rpm_to_radps") return 2.0 * std::numbers::pi / 60.0;
+  if (c == "percent_to_ratio") return 0.01;
+  return 1.0;
+}
+
+CounterSpec parse_counter(config::StrictTable t, const dbc::MessageDef& m) {
+  CounterSpec c;
+  c.dbc_signal = signal_index(t, "signal", m);
+  const auto& s = m.signals[c.dbc_signal];
+  const double max_modulus =
+      s.length_bits >= 32 ? 4294967295.0 : std::ldexp(1.0, static_cast<int>(s.length_bits));
+  if (s.value_type != dbc::ValueType::kInteger)
+    throw t.error("signal", "counter must be an integer signal");
+  c.modulus = static_cast<std::uint32_t>(t.number_in("modulus", 2.0, max_modulus));
+  c.max_step = static_cast<std::uint32_t>(t.number_in("max_step", 1.0, 1.0, c.modulus - 1.0));
+  t.finish();
+  return c;
+}
+
+ChecksumSpec parse_checksum(config::StrictTable t, const dbc::MessageDef& m) {
+  ChecksumSpec c;
+  c.dbc_signal = signal_index(t, "signal", m);
+  const auto& s = m.signals[c.dbc_signal];
+  if (s.length_bits != 8 || s.value_type != dbc::ValueType::kInteger ||
+      s.mux_role == dbc::MuxRole::kMultiplexed) {
+    throw t.error("signal", "checksum signal " + s.name + " must be a plain 8-bit integer");
+  }
+  const std::string type = t.choice("type", "crc8_sae_j1850", {"crc8_sae_j1850", "xor"});
+  c.type = type == "xor" ? ChecksumType::kXor : ChecksumType::kCrc8SaeJ1850;
+  // Bytes occupied by the checksum signal itself (Intel or Motorola, 8 bits: 1 or 2 bytes).
+  const dbc::SignalCodec codec(s);
+  std::uint8_t own[64] = {};
+  codec.insert_raw(0xFF, own);
+  if (t.has("bytes")) {
+    for (double b : t.numbers("bytes")) {
+      if (b < 0 || b >= m.length_bytes || b != std::floor(b)) {
+        throw t.error("bytes", "byte index " + std::to_string(b) + " is outside message " + m.name +
+                                   " (" + std::to_string(m.length_bytes) + " bytes)");
+      }
+      if (own[static_cast<std::size_t>(b)] != 0) {
+        throw t.error("bytes", "covered bytes include the checksum itself");
+      }
+      c.bytes.push_back(static_cast<std::uint8_t>(b));
+    }
+  } else {
+    for (std::uint32_t b = 0; b < m.length_bytes; ++b) {
+      if (own[b] == 0) c.bytes.push_back(static_cast<std::uint8_t>(b));
+    }
+  }
+  t.finish();
+  return c;
+}
+
+MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bool rx) {
+  MessageBinding b;
+  b.dbc_message = message_index(t, db);
+  const dbc::MessageDef& m = db.messages[b.dbc_message];
+  if (auto c = t.optional_table("counter")) b.counter = parse_counter(std::move(*c), m);
+  if (auto c = t.optional_table("checksum")) b.checksum = parse_checksum(std::move(*c), m);
+  if (rx) {
+    const double default_ms = 3.0 * m.cycle_time_ms;
+    if (!t.has("timeout_ms") && m.cycle_time_ms == 0) {
+      throw t.error("message " + m.name + " has no GenMsgCycleTime: give timeout_ms");
+    }
+    const double timeout_ms = t.number_in("timeout_ms", default_ms, 1.0, 3.6e6);
+    b.timeout_ns = static_cast<std::int64_t>(std::llround(timeout_ms * 1e6));
+  } else {
+    if (m.cycle_time_ms == 0) {
+      throw t.error("message", "message " + m.name + " has no GenMsgCycleTime, cannot be sent");
+    }
+    b.period_ns = static_cast<std::int64_t>(m.cycle_time_ms) * 1'000'000;
+  }
+  std::vector<config::StrictTable> signal_tables;
+  if (t.has("signal")) signal_tables = t.tables("signal");
+  for (config::StrictTable& st : signal_tables) {
+    SignalBinding sb;
+    sb.dbc_signal = signal_index(st, "dbc", m);
+    const dbc::SignalDef& s = m.signals[sb.dbc_signal];
+    if (!rx && st.has("constant")) {
+      sb.constant = st.number("constant");
+    } else {
+      const std::string name = st.string("model");
+      sb.model = model::signal_by_name(name);
+      if (!sb.model) throw st.error("model", "no model signal '" + name + "' (model/signals.h)");
+      if (rx && !model::info(*sb.model).is_input) {
+        throw st.error("model", "'" + name + "' is a model output, it cannot be received");
+      }
+      const double named = named_scale(st);
+      sb.scale = st.number("scale", named);
+      if (sb.scale == 0.0 || !std::isfinite(sb.scale)) throw st.error("scale", "must be non-zero");
+      sb.offset = st.number("offset", 0.0);
+      if (rx) sb.fallback = st.number("fallback", 0.0);
+    }
+    if (b.counter && b.counter->dbc_signal == sb.dbc_signal) {
+      throw st.error("dbc", "signal " + s.name + " is the alive counter, it cannot be mapped");
+    }
+    if (b.checksum && b.checksum->dbc_signal == sb.dbc_signal) {
+      throw st.error("dbc", "signal " + s.name + " is the checksum, it cannot be mapped");
+    }
+    for (const auto& other : b.signals) {
+      if (other.dbc_signal == sb.dbc_signal)
+        throw st.error("dbc", "signal " + s.name + " mapped twice");
+    }
+    st.finish();
+    b.signals.push_back(sb);
+  }
+  t.finish();
+  return b;
+}
+
+}  // namespace
+
+CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& database) {
+  CanMapping mapping;
+  if (table.has("rx")) {
+    for (config::StrictTable& t : table.tables("rx"))
+      mapping.rx.push_back(parse_message(t, database, true));
+  }
+  if (table.has("tx")) {
+    for (config::StrictTable& t : table.tables("tx"))
+      mapping.tx.push_back(parse_message(t, database, false));
+  }
+  // One message per direction at most; a model input bound once.
+  for (std::size_t i = 0; i < mapping.rx.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (mapping.rx[i].dbc_message == mapping.rx[j].dbc_message) {
+        throw table.error(
+            "rx", "message " + database.messages[mapping.rx[i].dbc_message].name + " mapped twice");
+      }
+    }
+  }
+  for (std::size_t i = 0; i < mapping.tx.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (mapping.tx[i].dbc_message == mapping.tx[j].dbc_message) {
+        throw table.error(
+            "tx", "message " + database.messages[mapping.tx[i].dbc_message].name + " mapped twice");
+      }
+    }
+  }
+  bool seen[model::kSignalCount] = {};
+  for (const auto& m : mapping.rx) {
+    for (const auto& s : m.signals) {
+      const auto k = model::index(*s.model);
+      if (seen[k]) {
+        throw table.error("rx", "model signal " + std::string(model::info(*s.model).name) +
+                                    " is received from two CAN signals");
+      }
+      seen[k] = true;
+    }
+  }
+  return mapping;
+}
+
+CanConfig load_can_config(const std::filesystem::path& toml_file) {
+  const toml::table root = config::load_toml_file(toml_file);
+  config::StrictTable table(root, toml_file, "[can mapping]");
+  CanConfig config;
+  config.database = dbc::load_dbc(table.existing_path("dbc"));
+  config.mapping = parse_can_mapping(table, config.database);
+  table.finish();
+  return config;
+}
+
+}  // namespace rig::io::can::mapping

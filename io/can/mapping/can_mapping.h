@@ -1,0 +1,101 @@
+#pragma once
+/// @file
+/// Which DBC signals bind to which model signals, per direction, read from TOML (load time).
+///
+/// File format (see config/can/steering-bench.toml for a complete example):
+///
+///     dbc = "steering-bench.dbc"        # relative to this file
+///
+///     [[rx]]                            # a message the rig receives
+///     message = "EPS_Status"            # BO_ name in the DBC
+///     timeout_ms = 30                   # optional; default 3 x GenMsgCycleTime
+///     counter = { signal = "EPS_AliveCounter", modulus = 16, max_step = 1 }     # optional
+///     checksum = { signal = "EPS_Checksum", type = "crc8_sae_j1850", bytes = [1, 2, 3] }  # opt.
+///     [[rx.signal]]
+///     dbc = "EPS_MotorTorque"           # SG_ name in that message
+///     model = "assist_torque_nm"        # model::signal_by_name
+///     convert = "none"                  # optional named conversion, or scale/offset:
+///     scale = 1.0                       #   model = dbc * scale + offset
+///     offset = 0.0
+///     fallback = 0.0                    # model value applied (and flagged invalid) on timeout
+///
+///     [[tx]]                            # a message the rig sends at its GenMsgCycleTime
+///     message = "RIG_Steering"
+///     counter = ...; checksum = ...     # as above, filled in on every send
+///     [[tx.signal]]
+///     dbc = "SteeringWheelAngle"; model = "steering_wheel_angle_rad"; convert = "deg_to_rad"
+///     [[tx.signal]]
+///     dbc = "RIG_Mode"; constant = 1.0  # a fixed physical value instead of a model signal
+///
+/// Named conversions (model = dbc * scale): "none", "deg_to_rad", "kph_to_mps", "bar_to_pa",
+/// "rpm_to_radps", "percent_to_ratio". TX uses the inverse: dbc = (model - offset) / scale.
+/// Unmapped TX signals are sent at their GenSigStartValue. Checksum `bytes` default to every
+/// byte of the message except those of the checksum signal; the checksum signal must be 8 bits.
+/// The alive counter must advance by 1..max_step (mod modulus) per frame; a frozen or jumping
+/// counter is a failure. Every name is checked against the DBC and model/signals.h, and every
+/// error is config::ConfigError("file:line: ...").
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/can/dbc/dbc_database.h"
+#include "io/can/mapping/checksum.h"
+#include "io/config/strict_table.h"
+#include "model/signals.h"
+
+namespace rig::io::can::mapping {
+
+/// One bound signal: index into MessageDef::signals, and the model side.
+struct SignalBinding {
+  std::size_t dbc_signal = 0;          ///< index in MessageDef::signals
+  std::optional<model::Signal> model;  ///< empty for a TX constant
+  double scale = 1.0;                  ///< model = dbc * scale + offset
+  double offset = 0.0;
+  double fallback = 0.0;  ///< RX: model value on timeout
+  double constant = 0.0;  ///< TX without model signal: physical DBC value sent
+};
+
+struct CounterSpec {
+  std::size_t dbc_signal = 0;
+  std::uint32_t modulus = 16;
+  std::uint32_t max_step = 1;  ///< RX: accepted advance per frame is 1..max_step
+};
+
+struct ChecksumSpec {
+  std::size_t dbc_signal = 0;  ///< 8-bit signal holding the checksum
+  ChecksumType type = ChecksumType::kCrc8SaeJ1850;
+  std::vector<std::uint8_t> bytes;  ///< covered byte indices, in order
+};
+
+/// One mapped message (either direction).
+struct MessageBinding {
+  std::size_t dbc_message = 0;  ///< index in Database::messages
+  std::vector<SignalBinding> signals;
+  std::optional<CounterSpec> counter;
+  std::optional<ChecksumSpec> checksum;
+  std::int64_t timeout_ns = 0;  ///< RX only
+  std::int64_t period_ns = 0;   ///< TX only (GenMsgCycleTime), > 0
+};
+
+struct CanMapping {
+  std::vector<MessageBinding> rx;
+  std::vector<MessageBinding> tx;
+};
+
+/// The DBC and the mapping that refers to it.
+struct CanConfig {
+  dbc::Database database;
+  CanMapping mapping;
+};
+
+/// Reads the mapping tables `rx` and `tx` from `table` against `database` (does not read the
+/// `dbc` key and does not call finish() on `table`).
+CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& database);
+
+/// Reads a mapping TOML file: its `dbc` key (relative path) is loaded with load_dbc.
+CanConfig load_can_config(const std::filesystem::path& toml_file);
+
+}  // namespace rig::io::can::mapping

@@ -1,0 +1,108 @@
+#include "io/can/mapping/tx_scheduler.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rig::io::can::mapping {
+
+TxScheduler::TxScheduler(const CanConfig& config) {
+  messages_.reserve(config.mapping.tx.size());
+  for (const MessageBinding& b : config.mapping.tx) {
+    const dbc::MessageDef& def = config.database.messages[b.dbc_message];
+    Message m{.id = def.id,
+              .extended = def.extended,
+              .length_bytes = def.length_bytes,
+              .codec = dbc::MessageCodec(def),
+              .physical = {},
+              .bound = b.signals,
+              .minimum = {},
+              .maximum = {},
+              .clamp = {},
+              .mux_pages = {},
+              .next_page = 0,
+              .counter = b.counter,
+              .checksum = b.checksum,
+              .counter_value = 0,
+              .period_ns = b.period_ns,
+              .next_due_ns = 0};
+    // Unmapped signals go out at their start value (GenSigStartValue is raw).
+    for (std::size_t i = 0; i < def.signals.size(); ++i) {
+      m.physical.push_back(m.codec.signal(i).raw_to_physical(m.codec.signal(i).physical_to_raw(
+          def.signals[i].start_value_raw * def.signals[i].factor + def.signals[i].offset)));
+      if (def.signals[i].mux_role == dbc::MuxRole::kMultiplexed &&
+          std::find(m.mux_pages.begin(), m.mux_pages.end(), def.signals[i].mux_value) ==
+              m.mux_pages.end()) {
+        m.mux_pages.push_back(def.signals[i].mux_value);
+      }
+    }
+    std::sort(m.mux_pages.begin(), m.mux_pages.end());
+    for (const SignalBinding& sb : b.signals) {
+      const dbc::SignalDef& s = def.signals[sb.dbc_signal];
+      m.minimum.push_back(s.minimum);
+      m.maximum.push_back(s.maximum);
+      m.clamp.push_back(s.has_range());
+    }
+    messages_.push_back(std::move(m));
+  }
+}
+
+void TxScheduler::start(std::int64_t loop_start_ns) {
+  loop_start_ns_ = loop_start_ns;
+  for (Message& m : messages_) m.next_due_ns = loop_start_ns;
+}
+
+void TxScheduler::encode(std::size_t i, const model::Signals& signals, TxFrame& frame,
+                         io::IoCounters& counters) {
+  Message& m = messages_[i];
+  for (std::size_t k = 0; k < m.bound.size(); ++k) {
+    const SignalBinding& b = m.bound[k];
+    double physical = b.constant;
+    if (b.model) physical = (signals[*b.model] - b.offset) / b.scale;
+    if (m.clamp[k] && !(physical >= m.minimum[k] && physical <= m.maximum[k])) {
+      // NaN goes to the minimum too: never send an undefined value.
+      physical = physical > m.maximum[k] ? m.maximum[k] : m.minimum[k];
+      ++counters.out_of_range;
+    }
+    m.physical[b.dbc_signal] = physical;
+  }
+  const int mux = m.codec.multiplexor_index();
+  if (mux >= 0 && !m.mux_pages.empty()) {
+    m.physical[static_cast<std::size_t>(mux)] =
+        m.codec.signal(static_cast<std::size_t>(mux)).raw_to_physical(m.mux_pages[m.next_page]);
+    m.next_page = (m.next_page + 1) % m.mux_pages.size();
+  }
+  frame.id = m.id;
+  frame.extended = m.extended;
+  frame.fd = m.length_bytes > 8;
+  frame.len = static_cast<std::uint8_t>(m.length_bytes);
+  m.codec.encode(m.physical, frame.data.data());
+  if (m.counter) {
+    m.codec.signal(m.counter->dbc_signal).insert_raw(m.counter_value, frame.data.data());
+    m.counter_value = (m.counter_value + 1) % m.counter->modulus;
+  }
+  if (m.checksum) {
+    const ChecksumSpec& c = *m.checksum;
+    std::uint8_t covered[64];
+    std::size_t n = 0;
+    for (std::uint8_t b : c.bytes) covered[n++] = frame.data[b];
+    const std::uint8_t sum =
+        c.type == ChecksumType::kXor ? xor8(covered, n) : crc8_sae_j1850(covered, n);
+    m.codec.signal(c.dbc_signal).insert_raw(sum, frame.data.data());
+  }
+}
+
+std::size_t TxScheduler::due_frames(std::int64_t now_ns, const model::Signals& signals,
+                                    std::span<TxFrame> out, io::IoCounters& counters) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < messages_.size() && n < out.size(); ++i) {
+    Message& m = messages_[i];
+    if (now_ns < m.next_due_ns || m.period_ns <= 0) continue;
+    encode(i, signals, out[n++], counters);
+    // Next slot on the grid loop_start + k * period strictly after now (no burst after overrun).
+    const std::int64_t k = (now_ns - loop_start_ns_) / m.period_ns + 1;
+    m.next_due_ns = loop_start_ns_ + k * m.period_ns;
+  }
+  return n;
+}
+
+}  // namespace rig::io::can::mapping

@@ -1,0 +1,246 @@
+#include "io/config/vehicle_file.h"
+
+#include <map>
+#include <string>
+#include <vector>
+#include "model/report.h"
+
+namespace rig::io::config {
+namespace {
+
+using model::tire::TmeasyCurve;
+using model::vehicle::AxleParams;
+using model::vehicle::TireParams;
+using model::vehicle::VehicleParams;
+
+constexpr double kBig = 1e12;
+
+TmeasyCurve read_curve(StrictTable t) {
+  TmeasyCurve c;
+  c.initial_slope_n = t.number_in("initial_slope_n", 1, kBig);
+  c.max_force_n = t.number_in("max_force_n", 1, kBig);
+  c.max_slip = t.number_in("slip_at_max", 1e-3, 10);
+  c.slide_force_n = t.number_in("sliding_force_n", 0, kBig);
+  c.slide_slip = t.number_in("slip_at_sliding", 1e-3, 100);
+  t.finish();
+  if (c.slide_slip <= c.max_slip) throw t.error("slip_at_sliding must exceed slip_at_max");
+  if (c.slide_force_n > c.max_force_n) throw t.error("sliding_force_n must not exceed max_force_n");
+  return c;
+}
+
+TireParams read_tire(StrictTable t) {
+  TireParams p;
+  p.radius_unloaded_m = t.number_in("radius_unloaded_m", 0.1, 2);
+  p.vertical_stiffness_npm = t.number_in("vertical_stiffness_npm", 1e3, 1e8);
+  p.vertical_damping_nspm = t.number_in("vertical_damping_nspm", 0, 1e6);
+  p.nominal_load_n = t.number_in("nominal_load_n", 10, 1e6);
+  p.longitudinal.at_nominal = read_curve(t.table("longitudinal_nominal"));
+  p.longitudinal.at_double = read_curve(t.table("longitudinal_double"));
+  p.lateral.at_nominal = read_curve(t.table("lateral_nominal"));
+  p.lateral.at_double = read_curve(t.table("lateral_double"));
+  p.longitudinal_stiffness_npm = t.number_in("longitudinal_stiffness_npm", 1e3, 1e8);
+  p.longitudinal_damping_nspm = t.number_in("longitudinal_damping_nspm", 1, 1e6);
+  p.lateral_stiffness_npm = t.number_in("lateral_stiffness_npm", 1e3, 1e8);
+  p.lateral_damping_nspm = t.number_in("lateral_damping_nspm", 1, 1e6);
+  p.spin_inertia_kgm2 = t.number_in("spin_inertia_kgm2", 1e-3, 1e3);
+  p.rolling_resistance = t.number_in("rolling_resistance", 0.01, 0, 0.1);
+  p.velocity_floor_mps = t.number_in("velocity_floor_mps", 0.01, 1e-4, 1);
+  t.finish();
+  return p;
+}
+
+/// [axle.kinematics]: eq. (29) of the axle's left wheel, as the simple geometry or as five
+/// tables on one grid (model::vehicle::AxleKinematicsParams).
+model::vehicle::AxleKinematicsParams read_kinematics(StrictTable t) {
+  model::vehicle::AxleKinematicsParams k;
+  k.x_per_travel = t.number_in("x_per_travel", 0, -2, 2);
+  k.track_per_travel = t.number_in("track_per_travel", 0, -2, 2);
+  k.track_per_travel2_per_m = t.number_in("track_per_travel2_per_m", 0, -50, 50);
+  k.camber_rad = t.number_in("camber_rad", 0, -0.3, 0.3);
+  k.camber_per_travel_radpm = t.number_in("camber_per_travel_radpm", 0, -20, 20);
+  k.toe_rad = t.number_in("toe_rad", 0, -0.1, 0.1);
+  k.bump_steer_radpm = t.number_in("bump_steer_radpm", 0, -5, 5);
+  k.bicubic = t.choice("interpolation", "bicubic", {"bicubic", "bilinear"}) == "bicubic";
+  if (auto g = t.optional_table("grid")) {
+    k.grid.z_min = g->number_in("z_min_m", -1, 1);
+    k.grid.z_step = g->number_in("z_step_m", 1e-4, 1);
+    k.grid.z_count = static_cast<int>(g->number_in("z_count", 2, 1000));
+    k.grid.u_count = static_cast<int>(g->number_in("u_count", 1, 1, 1000));
+    if (k.grid.u_count > 1) {
+      k.grid.u_step = g->number_in("u_step_m", 1e-5, 1);
+      k.grid.u_min = -0.5 * k.grid.u_step * (k.grid.u_count - 1);  // symmetric about u = 0
+    }
+    g->finish();
+    const auto n = static_cast<std::size_t>(k.grid.z_count * k.grid.u_count);
+    const auto table = [&](const char* key) {
+      std::vector<double> v = t.numbers(key);
+      if (v.size() != n)
+        throw t.error(key, std::string(key) + ": need z_count x u_count = " + std::to_string(n) +
+                               " values (z-major)");
+      return v;
+    };
+    k.x_m = table("x_m");
+    k.y_m = table("y_m");
+    k.alpha_rad = table("alpha_rad");
+    k.beta_rad = table("beta_rad");
+    k.gamma_rad = table("gamma_rad");
+  }
+  t.finish();
+  return k;
+}
+
+AxleParams read_axle(StrictTable t, const std::map<std::string, TireParams>& tires) {
+  AxleParams a;
+  a.position_x_m = t.number_in("position_x_m", -20, 20);
+  a.track_m = t.number_in("track_m", 0.5, 4);
+  a.unsprung_mass_kg = t.number_in("unsprung_mass_kg", 1, 5000);
+  a.spring_stiffness_npm = t.number_in("spring_stiffness_npm", 1e2, 1e8);
+  a.damper_bump_nspm = t.number_in("damper_bump_nspm", 0, 1e7);
+  a.damper_rebound_nspm = t.number_in("damper_rebound_nspm", 0, 1e7);
+  a.bump_stop_travel_m = t.number_in("bump_stop_travel_m", 0.001, 1);
+  a.rebound_stop_travel_m = t.number_in("rebound_stop_travel_m", 0.001, 1);
+  a.stop_stiffness_npm = t.number_in("stop_stiffness_npm", 0, 1e9);
+  a.anti_roll_stiffness_npm = t.number_in("anti_roll_stiffness_npm", 0, 1e8);
+  a.steered = t.boolean("steered", false);
+  a.driven = t.boolean("driven", false);
+  a.brake_circuit = t.choice("brake_circuit", "front", {"front", "rear"}) == "front" ? 0 : 1;
+  a.brake_gain_nm_per_pa = t.number_in("brake_gain_nm_per_pa", 0, 1);
+  const std::string tire = t.string("tire");
+  const auto it = tires.find(tire);
+  if (it == tires.end()) throw t.error("tire", "no [tires." + tire + "] table");
+  a.tire = it->second;
+  if (auto k = t.optional_table("kinematics")) a.kinematics = read_kinematics(*k);
+  t.finish();
+  return a;
+}
+
+void read_steering(StrictTable t, model::vehicle::SteeringParams& s) {
+  s.torque_input = t.choice("input", "angle", {"angle", "torque"}) == "torque";
+  s.wheel_inertia_kgm2 = t.number_in("wheel_inertia_kgm2", 1e-3, 10);
+  s.column_damping_nmspr = t.number_in("column_damping_nmspr", 0, 100);
+  s.robot_stiffness_nmpr = t.number_in("robot_stiffness_nmpr", 300, 1, 1e5);
+  s.robot_damping_nmspr = t.number_in("robot_damping_nmspr", 8, 0, 1e4);
+  s.torsion_bar_stiffness_nmpr = t.number_in("torsion_bar_stiffness_nmpr", 1, 1e5);
+  s.torsion_bar_damping_nmspr = t.number_in("torsion_bar_damping_nmspr", 0, 1e3);
+  s.rack_per_pinion_m_per_rad = t.number_in("rack_per_pinion_m_per_rad", 1e-4, 1);
+  s.rack_mass_kg = t.number_in("rack_mass_kg", 0.1, 1000);
+  s.rack_friction_n = t.number_in("rack_friction_n", 0, 1e5);
+  s.rack_friction_speed_mps = t.number_in("rack_friction_speed_mps", 0.002, 1e-5, 1);
+  s.steering_arm_m = t.number_in("steering_arm_m", 0.01, 2);
+  s.tie_rod_stiffness_npm = t.number_in("tie_rod_stiffness_npm", 1e3, 1e10);
+  s.trail_m = t.number_in("trail_m", 0, 0.5);
+  s.assist_gain = t.number_in("assist_gain", 0, 100);
+  s.assist_max_nm = t.number_in("assist_max_nm", 1e-3, 1e4);
+  t.finish();
+}
+
+void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
+  d.full_load_speed_radps = t.numbers("full_load_speed_radps");
+  d.full_load_torque_nm = t.numbers("full_load_torque_nm");
+  if (d.full_load_speed_radps.size() < 2 ||
+      d.full_load_speed_radps.size() != d.full_load_torque_nm.size()) {
+    throw t.error("full_load_torque_nm", "needs as many entries as full_load_speed_radps (>= 2)");
+  }
+  for (std::size_t i = 1; i < d.full_load_speed_radps.size(); ++i) {
+    if (!(d.full_load_speed_radps[i] > d.full_load_speed_radps[i - 1])) {
+      throw t.error("full_load_speed_radps", "must be strictly increasing");
+    }
+  }
+  d.drag_torque_nm = t.number_in("drag_torque_nm", 0, 1e4);
+  d.drag_torque_per_speed_nms = t.number_in("drag_torque_per_speed_nms", 0, 100);
+  d.engine_inertia_kgm2 = t.number_in("engine_inertia_kgm2", 1e-3, 100);
+  d.idle_speed_radps = t.number_in("idle_speed_radps", 10, 500);
+  d.idle_gain_per_radps = t.number_in("idle_gain_per_radps", 0, 10);
+  d.max_speed_radps = t.number_in("max_speed_radps", 50, 2000);
+  d.converter_capacity_nms2 = t.number_in("converter_capacity_nms2", 1e-5, 10);
+  d.lockup_damping_nms = t.number_in("lockup_damping_nms", 0, 1e5);
+  d.lockup_start_radps = t.number_in("lockup_start_radps", 0, 2000);
+  d.lockup_full_radps = t.number_in("lockup_full_radps", 0, 2000);
+  if (d.lockup_full_radps <= d.lockup_start_radps)
+    throw t.error("lockup_full_radps", "must exceed lockup_start_radps");
+  d.gear_ratios = t.numbers("gear_ratios");
+  if (d.gear_ratios.empty()) throw t.error("gear_ratios", "needs at least one gear");
+  d.reverse_ratio = t.number_in("reverse_ratio", 0.1, 50);
+  d.final_drive_ratio = t.number_in("final_drive_ratio", 0.1, 50);
+  d.efficiency = t.number_in("efficiency", 0.1, 1);
+  d.transmission_inertia_kgm2 = t.number_in("transmission_inertia_kgm2", 1e-3, 1e3);
+  d.half_shaft_stiffness_nmpr = t.number_in("half_shaft_stiffness_nmpr", 10, 1e8);
+  d.half_shaft_damping_nmspr = t.number_in("half_shaft_damping_nmspr", 0.1, 1e6);
+  d.upshift_speed_low_radps = t.number_in("upshift_speed_low_radps", 10, 2000);
+  d.upshift_speed_high_radps = t.number_in("upshift_speed_high_radps", 10, 2000);
+  d.downshift_speed_radps = t.number_in("downshift_speed_radps", 10, 2000);
+  d.shift_dwell_s = t.number_in("shift_dwell_s", 0, 10);
+  t.finish();
+}
+
+}  // namespace
+
+VehicleParams load_vehicle_file(const std::filesystem::path& file) {
+  const toml::table root = load_toml_file(file);
+  StrictTable t(root, file, "vehicle");
+  VehicleParams p;
+  p.name = t.string("name");
+  {
+    StrictTable c = t.table("chassis");
+    p.chassis.mass_kg = c.number_in("mass_kg", 1, 1e6);
+    p.chassis.inertia_kgm2 = {c.number_in("inertia_xx_kgm2", 1e-3, 1e8),
+                              c.number_in("inertia_yy_kgm2", 1e-3, 1e8),
+                              c.number_in("inertia_zz_kgm2", 1e-3, 1e8)};
+    p.chassis.inertia_xz_kgm2 = c.number_in("inertia_xz_kgm2", 0, -1e7, 1e7);
+    p.chassis.cg_height_m = c.number_in("cg_height_m", 0.05, 5);
+    p.chassis.drag_area_m2 = c.number_in("drag_area_m2", 0, 50);
+    p.chassis.air_density_kgpm3 = c.number_in("air_density_kgpm3", 1.2, 0, 2);
+    c.finish();
+  }
+  std::map<std::string, TireParams> tires;
+  {
+    StrictTable tt = t.table("tires");
+    for (const auto& [key, node] : tt.raw()) {
+      if (!node.is_table()) throw tt.error(key.str(), "must be a table of tire parameters");
+      tires.emplace(std::string(key.str()), read_tire(tt.table(key.str())));
+    }
+    tt.finish();
+  }
+  for (auto& a : t.tables("axle")) p.axles.push_back(read_axle(std::move(a), tires));
+  if (p.axles.empty() || p.axles.size() > static_cast<std::size_t>(model::kMaxWheelsPerUnit / 2)) {
+    throw t.error("axle", "needs 1 to 6 [[axle]] tables");
+  }
+  // A trailer (no steered, no driven axle) may leave out [steering] and [drivetrain].
+  bool any_steered = false, any_driven = false;
+  for (const auto& a : p.axles) {
+    any_steered = any_steered || a.steered;
+    any_driven = any_driven || a.driven;
+  }
+  if (auto s = t.optional_table("steering")) {
+    read_steering(std::move(*s), p.steering);
+  } else if (any_steered) {
+    throw t.error("steering", "a vehicle with a steered axle needs a [steering] table");
+  }
+  if (auto d = t.optional_table("drivetrain")) {
+    read_drivetrain(std::move(*d), p.drivetrain);
+  } else if (any_driven) {
+    throw t.error("drivetrain", "a vehicle with a driven axle needs a [drivetrain] table");
+  }
+  t.finish();
+  return p;
+}
+
+model::vehicle::RoadParams read_road(StrictTable& m) {
+  model::vehicle::RoadParams r;
+  r.grade = m.number_in("road_grade", 0, -1, 1);
+  r.bank = m.number_in("road_bank", 0, -1, 1);
+  r.friction = m.number_in("road_friction", 1.0, 0.05, 2);
+  if (m.has("road_friction_right"))  // split mu: the right-hand wheels
+    r.friction_right = m.number_in("road_friction_right", 0.05, 2);
+  return r;
+}
+
+VehicleModelSettings read_vehicle_model(StrictTable& m) {
+  VehicleModelSettings v;
+  v.params = load_vehicle_file(m.existing_path("vehicle"));
+  v.params.road = read_road(m);
+  v.initial_speed_mps = m.number_in("initial_speed_mps", 0.0, -100, 100);
+  return v;
+}
+
+}  // namespace rig::io::config

@@ -1,0 +1,32 @@
+#pragma once
+/// @file
+/// Loads a vehicle file (config/vehicles/*.toml) into model::vehicle::VehicleParams, strictly:
+/// every key has its unit in its name, unknown keys and impossible values are ConfigErrors
+/// with `file:line`. Load time only.
+
+#include <filesystem>
+
+#include "io/config/strict_table.h"
+#include "model/vehicle/vehicle_params.h"
+
+namespace rig::io::config {
+
+/// Reads a whole vehicle file.
+model::vehicle::VehicleParams load_vehicle_file(const std::filesystem::path& file);
+
+/// Reads the road keys (road_grade, road_bank, road_friction, road_friction_right for split mu)
+/// of a maneuver's [model] table; absent keys keep the defaults (flat, dry).
+model::vehicle::RoadParams read_road(StrictTable& model_table);
+
+/// The vehicle keys of a rig configuration's [model] table (kind = "vehicle"):
+///   vehicle = "../vehicles/sedan.toml"   (relative to the configuration file)
+///   road_grade, road_bank (tan of the slopes), road_friction (mu), initial_speed_mps.
+struct VehicleModelSettings {
+  model::vehicle::VehicleParams params;
+  double initial_speed_mps = 0;
+};
+
+/// Reads the vehicle keys from [model] (the caller has read `kind`); leaves finish() to the caller.
+VehicleModelSettings read_vehicle_model(StrictTable& model_table);
+
+}  // namespace rig::io::config

@@ -1,0 +1,95 @@
+#include "io/can/mapping/can_mapping.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+namespace rig::io::can {
+namespace {
+
+using ::testing::HasSubstr;
+
+const std::string kConfigDir = RIG_CAN_CONFIG_DIR;
+
+TEST(CanMapping, ExampleMappingLoads) {
+  const can::mapping::CanConfig c =
+      can::mapping::load_can_config(kConfigDir + "/steering-bench.toml");
+  ASSERT_EQ(c.mapping.rx.size(), 3u);
+  ASSERT_EQ(c.mapping.tx.size(), 5u);
+  const can::mapping::MessageBinding& eps = c.mapping.rx[0];
+  EXPECT_EQ(c.database.messages[eps.dbc_message].name, "EPS_Status");
+  EXPECT_EQ(eps.timeout_ns, 30'000'000);  // 3 x GenMsgCycleTime 10 ms
+  ASSERT_TRUE(eps.counter.has_value());
+  EXPECT_EQ(eps.counter->modulus, 16u);
+  ASSERT_TRUE(eps.checksum.has_value());
+  EXPECT_EQ(eps.checksum->type, can::mapping::ChecksumType::kCrc8SaeJ1850);
+  EXPECT_EQ(eps.checksum->bytes, (std::vector<std::uint8_t>{0, 1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(eps.signals[0].model, model::Signal::kAssistTorque);
+  const can::mapping::MessageBinding& esc = c.mapping.rx[1];
+  EXPECT_EQ(esc.checksum->type, can::mapping::ChecksumType::kXor);
+  EXPECT_EQ(esc.signals[0].scale, 1e5);               // bar -> Pa
+  EXPECT_EQ(c.mapping.rx[2].timeout_ns, 60'000'000);  // explicit timeout_ms
+  const can::mapping::MessageBinding& swa = c.mapping.tx[0];
+  EXPECT_EQ(swa.period_ns, 10'000'000);
+  EXPECT_DOUBLE_EQ(swa.signals[0].scale, std::numbers::pi / 180.0);
+  EXPECT_DOUBLE_EQ(c.mapping.tx[1].signals[0].scale, 1.0 / 3.6);
+}
+
+class CanMappingErrors : public ::testing::Test {
+ protected:
+  /// Writes `body` after a `dbc = ...` line and returns the config::ConfigError text of loading it.
+  static std::string error_of(const std::string& body) {
+    const std::string file = ::testing::TempDir() + "/rig_can_mapping_test.toml";
+    {
+      std::ofstream out(file);
+      out << "dbc = \"" << kConfigDir << "/steering-bench.dbc\"\n" << body;
+    }
+    try {
+      (void)can::mapping::load_can_config(file);
+    } catch (const config::ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  }
+};
+
+TEST_F(CanMappingErrors, UnknownNamesAndBadValuesNameTheLine) {
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"Nope\"\n"),
+              HasSubstr(":3: [can mapping].rx[0] message: no message 'Nope'"));
+  EXPECT_THAT(
+      error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\ndbc = \"X\"\n"
+               "model = \"assist_torque_nm\"\n"),
+      HasSubstr(":5: [can mapping].rx[0].signal[0] dbc: no signal 'X' in message EPS_Status"));
+  EXPECT_THAT(
+      error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\ndbc = \"EPS_MotorTorque\"\n"
+               "model = \"assist_torque\"\n"),
+      HasSubstr(":6: [can mapping].rx[0].signal[0] model: no model signal 'assist_torque'"));
+  EXPECT_THAT(
+      error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\ndbc = \"EPS_MotorTorque\"\n"
+               "model = \"vehicle_speed_mps\"\n"),
+      HasSubstr("is a model output"));
+  EXPECT_THAT(
+      error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\ndbc = \"EPS_MotorTorque\"\n"
+               "model = \"assist_torque_nm\"\nconvert = \"furlongs\"\n"),
+      HasSubstr(":7: [can mapping].rx[0].signal[0] convert"));
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
+                       "checksum = { signal = \"EPS_MotorTorque\" }\n"),
+              HasSubstr("must be a plain 8-bit integer"));
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
+                       "checksum = { signal = \"EPS_Checksum\", bytes = [0, 9] }\n"),
+              HasSubstr("outside message EPS_Status"));
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
+                       "counter = { signal = \"EPS_Counter\", modulus = 17 }\n"),
+              HasSubstr("modulus"));
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\nspeling = 1\n"), HasSubstr("speling"));
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx]]\nmessage = \"EPS_Status\"\n"),
+              HasSubstr("mapped twice"));
+  EXPECT_EQ(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"), "");
+}
+
+}  // namespace
+}  // namespace rig::io::can
