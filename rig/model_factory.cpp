@@ -10,20 +10,29 @@
 namespace rig {
 namespace {
 
+/// The routing decision for the assist: the ECU's torque when [routing] sends it from CAN, else
+/// the built-in boost curve.
+bool assist_from_input(const RigConfig& config) {
+  return config.routing[model::index(model::Signal::kAssistTorque)] == model::SignalSource::kCan;
+}
+
 /// A VehicleModel at step h, at rest or at the initial speed.
 std::unique_ptr<model::SteppedModel> make_vehicle_model(
-    const io::config::VehicleModelSettings& settings, double step_s) {
-  auto m = std::make_unique<model::vehicle::VehicleModel>(settings.params, step_s);
+    const io::config::VehicleModelSettings& settings, bool assist_input, double step_s) {
+  model::vehicle::VehicleParams params = settings.params;
+  params.steering.assist_from_input = assist_input;
+  auto m = std::make_unique<model::vehicle::VehicleModel>(params, step_s);
   if (settings.initial_speed_mps != 0) m->set_forward_speed(settings.initial_speed_mps);
   return m;
 }
 
 /// A model::combination::Combination; its parallel option runs on the rig's worker thread.
 std::unique_ptr<model::SteppedModel> make_combination_model(
-    const io::config::CombinationModelSettings& settings, double step_s) {
+    const io::config::CombinationModelSettings& settings, bool assist_input, double step_s) {
   model::combination::CombinationParams p;
   p.name = settings.name;
   p.units = settings.units;
+  for (auto& unit : p.units) unit.steering.assist_from_input = assist_input;
   p.joints = settings.joints;
   p.parallel = settings.parallel;
   p.begin_step_runner = make_thread_begin_step_runner;
@@ -37,10 +46,12 @@ std::unique_ptr<model::SteppedModel> make_combination_model(
 
 std::unique_ptr<model::SteppedModel> make_model(const RigConfig& config) {
   if (config.model.kind == "vehicle") {
-    return make_vehicle_model(*config.model.vehicle, config.rig.period_s);
+    return make_vehicle_model(*config.model.vehicle, assist_from_input(config),
+                              config.rig.period_s);
   }
   if (config.model.kind == "combination") {
-    return make_combination_model(*config.model.combination, config.rig.period_s);
+    return make_combination_model(*config.model.combination, assist_from_input(config),
+                                  config.rig.period_s);
   }
   // kind is validated at load time; the rest is "quarter-car".
   return std::make_unique<model::paper::QuarterCarModel>(config.model.quarter_car,

@@ -143,9 +143,8 @@ void VehicleModel::read_inputs(const Signals& s) noexcept {
   }
   bus_.steering_angle_cmd_rad = in(Signal::kSteeringWheelAngleCmd, 0.0);
   bus_.hand_torque_cmd_nm = in(Signal::kSteeringWheelTorqueCmd, 0.0);
-  // Routing is config: an assist torque from CAN is used; otherwise the built-in boost curve.
-  bus_.assist_from_input = s.source[index(Signal::kAssistTorque)] == SignalSource::kCan &&
-                           s.valid[index(Signal::kAssistTorque)];
+  // the assist input while valid when routed to it (SteeringParams::assist_from_input)
+  bus_.assist_from_input = p_.steering.assist_from_input && s.valid[index(Signal::kAssistTorque)];
   bus_.assist_input_nm = in(Signal::kAssistTorque, 0.0);
   gear_request_ = static_cast<int>(std::lround(in(Signal::kGearRequest, 99.0)));
 }

@@ -92,6 +92,10 @@ struct SteeringParams {
   double trail_m = 0.04;                 ///< pneumatic + caster trail for the aligning torque
   double assist_gain = 4.0;              ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
   double assist_max_nm = 12.0;
+  /// Which assist acts (a routing decision, set by the rig from [routing] assist_torque_nm):
+  /// true: the assist_torque_nm input (the ECU's motor torque) while it is valid, the boost
+  /// curve while it is not; false: always the built-in boost curve.
+  bool assist_from_input = false;
 };
 
 /// Engine, torque converter with lock-up, gearbox, open differentials (sec. 2.3).

@@ -467,16 +467,14 @@ TEST(Vehicle, GradeBrakeToStandstillHoldAndDriveAway) {
 std::pair<double, double> torque_steer(bool assist_from_can, double can_assist_nm) {
   VehicleParams p = sedan();
   p.steering.torque_input = true;
+  p.steering.assist_from_input = assist_from_can;
   VehicleModel m(p, 1e-3);
   m.set_forward_speed(60 / 3.6);
   Signals s = driver_inputs();
   s[Signal::kGearRequest] = 3;
   s[Signal::kThrottlePedal] = 0.15;
   s[Signal::kSteeringWheelTorqueCmd] = 2.0;
-  if (assist_from_can) {
-    s.source[index(Signal::kAssistTorque)] = SignalSource::kCan;
-    s[Signal::kAssistTorque] = can_assist_nm;
-  }
+  if (assist_from_can) s[Signal::kAssistTorque] = can_assist_nm;
   run(m, s, 4.0, nullptr);
   return {s[Signal::kSteeringWheelAngle], s[Signal::kTorsionBarTorque]};
 }

@@ -46,7 +46,8 @@ TEST(ClosedLoopVcan, AssistFromVirtualEcuLowersTorsionBarTorqueByTheBoostRatio) 
   ASSERT_TRUE(ecu_assist.wait_for_line(ready, 90000));
   ASSERT_TRUE(ecu_zero.wait_for_line(ready, 90000));
 
-  const auto params = io::config::load_vehicle_file(src + "/config/vehicles/sedan.toml");
+  auto params = io::config::load_vehicle_file(src + "/config/vehicles/sedan.toml");
+  params.steering.assist_from_input = true;  // [routing] assist_torque_nm = "can"
   constexpr double kSpeed = 60 / 3.6;
   model::vehicle::VehicleModel with(params, 1e-3);
   model::vehicle::VehicleModel without(params, 1e-3);
