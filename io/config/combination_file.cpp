@@ -11,7 +11,7 @@ CombinationModelSettings read_combination_model(StrictTable& m) {
   using model::combination::JointKind;
   using model::combination::JointParams;
   CombinationModelSettings c;
-  const model::vehicle::RoadParams road = read_road(m);
+  const model::road::RoadParams road = read_road(m);
   c.initial_speed_mps = m.number_in("initial_speed_mps", 0.0, -100, 100);
   c.parallel = m.boolean("parallel", false);
   for (auto& u : m.tables("unit")) {

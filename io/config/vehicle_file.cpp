@@ -29,7 +29,8 @@ TmeasyCurve read_curve(StrictTable t) {
 }
 
 TireParams read_tire(StrictTable t) {
-  TireParams p;
+  TireParams tire;
+  model::tire::TmeasyParams& p = tire.tmeasy;
   p.radius_unloaded_m = t.number_in("radius_unloaded_m", 0.1, 2);
   p.vertical_stiffness_npm = t.number_in("vertical_stiffness_npm", 1e3, 1e8);
   p.vertical_damping_nspm = t.number_in("vertical_damping_nspm", 0, 1e6);
@@ -42,11 +43,11 @@ TireParams read_tire(StrictTable t) {
   p.longitudinal_damping_nspm = t.number_in("longitudinal_damping_nspm", 1, 1e6);
   p.lateral_stiffness_npm = t.number_in("lateral_stiffness_npm", 1e3, 1e8);
   p.lateral_damping_nspm = t.number_in("lateral_damping_nspm", 1, 1e6);
-  p.spin_inertia_kgm2 = t.number_in("spin_inertia_kgm2", 1e-3, 1e3);
+  tire.spin_inertia_kgm2 = t.number_in("spin_inertia_kgm2", 1e-3, 1e3);
   p.rolling_resistance = t.number_in("rolling_resistance", 0.01, 0, 0.1);
   p.velocity_floor_mps = t.number_in("velocity_floor_mps", 0.01, 1e-4, 1);
   t.finish();
-  return p;
+  return tire;
 }
 
 /// [axle.kinematics]: eq. (29) of the axle's left wheel, as the simple geometry or as five
@@ -225,8 +226,8 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file) {
   return p;
 }
 
-model::vehicle::RoadParams read_road(StrictTable& m) {
-  model::vehicle::RoadParams r;
+model::road::RoadParams read_road(StrictTable& m) {
+  model::road::RoadParams r;
   r.grade = m.number_in("road_grade", 0, -1, 1);
   r.bank = m.number_in("road_bank", 0, -1, 1);
   r.friction = m.number_in("road_friction", 1.0, 0.05, 2);

@@ -16,7 +16,7 @@ model::vehicle::VehicleParams load_vehicle_file(const std::filesystem::path& fil
 
 /// Reads the road keys (road_grade, road_bank, road_friction, road_friction_right for split mu)
 /// of a maneuver's [model] table; absent keys keep the defaults (flat, dry).
-model::vehicle::RoadParams read_road(StrictTable& model_table);
+model::road::RoadParams read_road(StrictTable& model_table);
 
 /// The vehicle keys of a rig configuration's [model] table (kind = "vehicle"):
 ///   vehicle = "../vehicles/sedan.toml"   (relative to the configuration file)

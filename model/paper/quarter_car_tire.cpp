@@ -12,21 +12,21 @@ double QuarterCarTire::max_force_n() const noexcept {
 
 TireLongitudinalState QuarterCarTire::evaluate(double x_e, double v, double w) const noexcept {
   if (cache_valid_ && x_e == cached_x_e_ && v == cached_v_ && w == cached_w_) return cached_;
-  tire::TireInput in;
+  tire::legacy::TireInput in;
   in.long_speed_mps = v;
   in.spin_radps = w;
   in.rolling_radius_m = radius_m_;
   in.load_n = wheel_load_n_;
   in.friction = 1.0;
-  tire::TireOutput out;
-  tire_.evaluate(in, tire::TireDeflection{x_e, 0.0}, out);
+  tire::legacy::TireOutput out;
+  tire_.evaluate(in, tire::legacy::TireDeflection{x_e, 0.0}, out);
   TireLongitudinalState st;
   st.deflection_rate_mps = out.deflection_rate(0);
   st.force_n = out.long_force_n;
   st.limited = out.long_limited;
   st.d_rate_d_deflection = out.d_rate_d_deflection(0);
-  st.d_force_d_speed = out.d_force(0, tire::kByLongSpeed);
-  st.d_force_d_spin = out.d_force(0, tire::kBySpin);
+  st.d_force_d_speed = out.d_force(0, tire::legacy::kByLongSpeed);
+  st.d_force_d_spin = out.d_force(0, tire::legacy::kBySpin);
   st.rolling_torque_nm = out.rolling_torque_nm;
   st.d_rolling_torque_d_spin = out.d_rolling_torque_d_spin;
   cached_x_e_ = x_e;
@@ -38,7 +38,7 @@ TireLongitudinalState QuarterCarTire::evaluate(double x_e, double v, double w) c
 }
 
 double QuarterCarTire::limit_deflection(double x_e) const noexcept {
-  tire::TireDeflection d{x_e, 0.0};
+  tire::legacy::TireDeflection d{x_e, 0.0};
   tire_.clamp_deflection(wheel_load_n_, 1.0, d);
   return d.long_m;
 }

@@ -4,7 +4,7 @@
 /// constant wheel load, longitudinal only (v_y = 0, y_e = 0), with the partial derivatives the
 /// solver needs.
 
-#include "model/tire/tmeasy_tire.h"
+#include "model/tire/tmeasy_dual_law.h"
 
 namespace rig::model::paper {
 
@@ -36,7 +36,7 @@ class QuarterCarTire {
   [[nodiscard]] double limit_deflection(double deflection_m) const noexcept;
 
  private:
-  tire::TmeasyTire tire_;
+  tire::legacy::TmeasyTire tire_;
   double wheel_load_n_;
   double radius_m_;
   // The last evaluation: the solver asks for rate and Jacobian (and forces and their partials)

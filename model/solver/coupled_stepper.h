@@ -3,7 +3,7 @@
 /// One step of several separately modelled systems joined by constraints (eqs. 45-50): each
 /// system computes z^u and mu independently, Newton finds lambda, each system finishes its step
 /// with dz = mu lambda. Vehicle combinations (car + tow bar + trailer) use it with whole
-/// vehicles (Engine) as systems and only add their constraint functions.
+/// vehicles (SequentialStepper) as systems and only add their constraint functions.
 
 #include <vector>
 

@@ -24,7 +24,7 @@ enum class ForceEvaluation {
   kCurrentCoordinates,
 };
 
-/// A block stepper seen by the Engine: advance() performs its line of eq. (8).
+/// A block stepper seen by the SequentialStepper: advance() performs its line of eq. (8).
 class Stage {
  public:
   Stage() = default;

@@ -1,10 +1,10 @@
 #pragma once
 /// @file
-/// The TMeasy tire as a solver force element (method.md eq. 8, first line): states
-/// s = (x_e, y_e), rate f = (x_e', y_e') of eq. (24) and its lateral twin, df/ds diagonal, and
-/// the eq. (26) clamp after the implicit update. The owner (vehicle, quarter car) writes the
-/// current TireInput into input() before each step; force() then gives F_x, F_y and their
-/// partials at the newest state for the framework's q and M_VI.
+/// The TMeasy tire as a solver force element (eq. 3; advanced by eq. 8, first line): states
+/// s = (x_e, y_e), rate eq. (24) and its lateral twin with f frozen at the start of the step,
+/// df/ds diagonal, and eq. (26) on the state after the implicit update (limit_deflection). The
+/// owner keeps the states in its one state struct and writes the step's TireContact before the
+/// stage runs; the forces then come from tire_forces() at the newest state.
 
 #include "model/solver/force_element.h"
 #include "model/tire/tmeasy_tire.h"
@@ -13,61 +13,34 @@ namespace rig::model::tire {
 
 class TmeasyForceElement final : public solver::ForceElement<2> {
  public:
-  explicit TmeasyForceElement(const TmeasyParams& params = default_215_55_r18()) noexcept
-      : tire_(params) {}
-
-  /// The inputs of the next evaluation (contact velocities, spin, r_D, F_z, mu).
-  [[nodiscard]] TireInput& input() noexcept { return input_; }
-  [[nodiscard]] const TmeasyTire& tire() const noexcept { return tire_; }
+  /// params, contact and state must outlive the element (they belong to its owner).
+  TmeasyForceElement(const TmeasyParams& params, const TireContact& contact, Vector& state) noexcept
+      : params_(params), contact_(contact), state_(state) {}
 
   [[nodiscard]] Eigen::Index state_size() const noexcept override { return 2; }
-  [[nodiscard]] Vector& state() noexcept override { return s_; }
-
-  /// f = (x_e', y_e') at s (eq. 24, limiter eq. 26, lift-off relaxation).
+  [[nodiscard]] Vector& state() noexcept override { return state_; }
+  /// f = (x_e', y_e'), eq. (24) at the step's contact.
   void rate(const Vector& s, Vector& f) const noexcept override {
-    f = evaluate_cached(s).deflection_rate;
+    f = deflection_rates(params_, contact_.characteristic, contact_.kinematics, contact_.f_per_slip,
+                         s)
+            .rate;
   }
-  /// df/ds = diag(d x_e'/d x_e, d y_e'/d y_e).
+  /// df/ds = diag(dx_e'/dx_e, dy_e'/dy_e).
   bool rate_jacobian(const Vector& s, Matrix& df_ds) const noexcept override {
-    df_ds.setZero();
-    df_ds.diagonal() = evaluate_cached(s).d_rate_d_deflection;
+    const DeflectionRates r = deflection_rates(params_, contact_.characteristic,
+                                               contact_.kinematics, contact_.f_per_slip, s);
+    df_ds << r.d_rate_d_deflection(0), 0, 0, r.d_rate_d_deflection(1);
     return true;
   }
-  /// Eq. (26) after the update: clamp the deflection to F_M / c.
+  /// Eq. (26) after the update: the spring force stays within the ellipse of the maxima.
   void after_update(Vector& s) noexcept override {
-    TireDeflection d{s(0), s(1)};
-    tire_.clamp_deflection(input_.load_n, input_.friction, d);
-    s = {d.long_m, d.lat_m};
+    limit_deflection(params_, contact_.characteristic, s);
   }
-
-  /// Forces, torques and partials at the current state and input.
-  void force(TireOutput& out) const noexcept { out = evaluate_cached(s_); }
 
  private:
-  // The stepper asks for df/ds and f at the same s: evaluate once (keyed by s and the input).
-  const TireOutput& evaluate_cached(const Vector& s) const noexcept {
-    const bool same_input = cached_input_.long_speed_mps == input_.long_speed_mps &&
-                            cached_input_.lat_speed_mps == input_.lat_speed_mps &&
-                            cached_input_.spin_radps == input_.spin_radps &&
-                            cached_input_.rolling_radius_m == input_.rolling_radius_m &&
-                            cached_input_.load_n == input_.load_n &&
-                            cached_input_.friction == input_.friction;
-    if (!cache_valid_ || !same_input || s != cached_s_) {
-      tire_.evaluate(input_, TireDeflection{s(0), s(1)}, cached_);
-      cached_input_ = input_;
-      cached_s_ = s;
-      cache_valid_ = true;
-    }
-    return cached_;
-  }
-
-  TmeasyTire tire_;
-  TireInput input_;
-  Vector s_ = Vector::Zero();
-  mutable TireOutput cached_;
-  mutable TireInput cached_input_;
-  mutable Vector cached_s_ = Vector::Zero();
-  mutable bool cache_valid_ = false;
+  const TmeasyParams& params_;
+  const TireContact& contact_;
+  Vector& state_;
 };
 
 }  // namespace rig::model::tire

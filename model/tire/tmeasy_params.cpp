@@ -37,14 +37,14 @@ const char* check_params(const TmeasyParams& p) noexcept {
     return e;
   if (!(p.reference_friction > 0)) return "reference_friction: mu0 must be > 0";
   if (!(p.rolling_resistance >= 0)) return "rolling_resistance: f_r must be >= 0";
-  if (!(p.long_stiffness_npm > 0 && p.long_damping_nspm > 0))
-    return "long_stiffness_npm, long_damping_nspm: c_x, d_x must be > 0";
-  if (!(p.lat_stiffness_npm > 0 && p.lat_damping_nspm > 0))
-    return "lat_stiffness_npm, lat_damping_nspm: c_y, d_y must be > 0";
-  if (!(p.unloaded_radius_m > 0)) return "unloaded_radius_m: r_0 must be > 0";
+  if (!(p.longitudinal_stiffness_npm > 0 && p.longitudinal_damping_nspm > 0))
+    return "longitudinal_stiffness_npm, longitudinal_damping_nspm: c_x, d_x must be > 0";
+  if (!(p.lateral_stiffness_npm > 0 && p.lateral_damping_nspm > 0))
+    return "lateral_stiffness_npm, lateral_damping_nspm: c_y, d_y must be > 0";
+  if (!(p.radius_unloaded_m > 0)) return "radius_unloaded_m: r_0 must be > 0";
   if (!(p.vertical_stiffness_npm > 0 && p.vertical_damping_nspm >= 0))
     return "vertical_stiffness_npm > 0 and vertical_damping_nspm >= 0 required";
-  if (!(p.slip_velocity_mps > 0)) return "slip_velocity_mps: v_N must be > 0";
+  if (!(p.velocity_floor_mps > 0)) return "velocity_floor_mps: v_N must be > 0";
   const TmeasyTrail& t = p.trail;
   if (!(t.zero_slip_nominal > 0 && t.end_slip_nominal > t.zero_slip_nominal &&
         t.zero_slip_double > 0 && t.end_slip_double > t.zero_slip_double))

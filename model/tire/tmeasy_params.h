@@ -34,20 +34,20 @@ struct TmeasyTrail {
 
 /// All TMeasy parameters of one tire.
 struct TmeasyParams {
-  double nominal_load_n = 3500.0;         ///< F_zN [N]
-  TmeasyCurvePair longitudinal;           ///< F_x(s_x) curves at F_zN, 2 F_zN
-  TmeasyCurvePair lateral;                ///< F_y(s_y) curves at F_zN, 2 F_zN
-  double reference_friction = 1.0;        ///< mu0: the road friction the curves were measured on
-  double rolling_resistance = 0.01;       ///< f_r: rolling resistance torque = f_r F_z r_D [-]
-  TmeasyTrail trail;                      ///< pneumatic trail (self-aligning torque)
-  double long_stiffness_npm = 250e3;      ///< c_x, eq. (22) [N/m]
-  double long_damping_nspm = 2000.0;      ///< d_x, eq. (22) [N s/m]
-  double lat_stiffness_npm = 175e3;       ///< c_y [N/m]
-  double lat_damping_nspm = 1750.0;       ///< d_y [N s/m]
-  double unloaded_radius_m = 0.3469;      ///< r_0 [m]
-  double vertical_stiffness_npm = 200e3;  ///< c_z [N/m]
-  double vertical_damping_nspm = 50.0;    ///< d_z [N s/m] (small; not in the issue's table)
-  double slip_velocity_mps = 0.5;         ///< v_N, the artificial velocity of eqs. (14-15) [m/s]
+  double nominal_load_n = 3500.0;    ///< F_zN [N]
+  TmeasyCurvePair longitudinal;      ///< F_x(s_x) curves at F_zN, 2 F_zN
+  TmeasyCurvePair lateral;           ///< F_y(s_y) curves at F_zN, 2 F_zN
+  double reference_friction = 1.0;   ///< mu0: the road friction the curves were measured on
+  double rolling_resistance = 0.01;  ///< f_r: rolling resistance torque = f_r F_z r_D [-]
+  TmeasyTrail trail;                 ///< pneumatic trail (self-aligning torque)
+  double longitudinal_stiffness_npm = 250e3;  ///< c_x, eq. (22) [N/m]
+  double longitudinal_damping_nspm = 2000.0;  ///< d_x, eq. (22) [N s/m]
+  double lateral_stiffness_npm = 175e3;       ///< c_y [N/m]
+  double lateral_damping_nspm = 1750.0;       ///< d_y [N s/m]
+  double radius_unloaded_m = 0.3469;          ///< r_0 [m]
+  double vertical_stiffness_npm = 200e3;      ///< c_z [N/m]
+  double vertical_damping_nspm = 50.0;        ///< d_z [N s/m] (small; not in the issue's table)
+  double velocity_floor_mps = 0.5;  ///< v_N, the artificial velocity of eqs. (14-15) [m/s]
 };
 
 /// The issue's default 215/55 R18 passenger tire (public TMeasy data set): exactly the issue-3

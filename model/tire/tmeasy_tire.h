@@ -1,17 +1,22 @@
 #pragma once
 /// @file
-/// The TMeasy tire with first-order deflection dynamics (method.md sec. 3, eqs. 14-26): steady
-/// state forces (eqs. 16-17), the deflection rates x_e', y_e' (eq. 24 and its lateral twin),
-/// stand-still and locked-wheel behaviour (eq. 25), the stick-slip limiter (eq. 26), rolling
-/// resistance and self-aligning torque, and the partial derivatives the solver needs.
-///
-/// Use as a force element (method.md eq. 8, first line): the states are s = (x_e, y_e); the rate
-/// is f = (x_e', y_e') = TireOutput::deflection_rate, df/ds = TireOutput::d_rate_d_deflection
-/// (diagonal); the forces go into the framework's q and their partials into M_VI.
-///
-/// Frames: the inputs are given in the wheel's ground frame at the contact point: x along the
-/// wheel's heading in the road plane, y lateral (to the left), z along the road normal. Positive
-/// F_x drives the vehicle forward; F_y is the lateral force on the wheel in that frame.
+/// TMeasy, the one tire law of the project (G. Rill; method.md sec. 3, eqs. 14-26). A user
+/// (the vehicle, the paper's quarter car) calls it in three stages:
+///   1. once per contact and step: characteristic_at(params, F_z, mu) - the curves at the wheel
+///      load and road friction and the normalizing factors (the load is frozen over the step);
+///   2. per evaluation: slip_of(...) - the generalized slip and f(s) = F(s)/s (eqs. 14-17);
+///   3. the first-order deflection dynamics (eqs. 22-24) with f given (the caller chooses the f of
+///      the start of the step for the force element's rate, or the newest for the forces):
+///      deflection_rates(), tire_forces(), damping_paths(), and the stick-slip limit of eq. (26):
+///      ONE elliptic limit on the combined force |(F_x/F_xM, F_y/F_yM)| <= 1, applied to the
+///      dynamic force (tire_forces) and to the spring force of the state (limit_deflection).
+/// Frames: the wheel's ground frame at the contact point (x along the wheel heading in the road
+/// plane, y lateral to the left, z along the road normal); F_x > 0 drives forward.
+/// Everything is allocation-free and noexcept; the per-evaluation functions are inline so that
+/// each caller compiles only what it uses.
+
+#include <cmath>
+#include <limits>
 
 #include <Eigen/Core>
 
@@ -19,93 +24,193 @@
 
 namespace rig::model::tire {
 
-/// Per-call inputs of the tire (kinematics from the framework, load from the vertical force).
-struct TireInput {
-  double long_speed_mps = 0;    ///< v_x: contact point velocity along the wheel heading
-  double lat_speed_mps = 0;     ///< v_y: contact point velocity lateral
-  double spin_radps = 0;        ///< omega: wheel spin rate about its axle
-  double rolling_radius_m = 0;  ///< r_D: dynamic rolling radius (see dynamic_rolling_radius())
-  double load_n = 0;            ///< F_z: wheel load; F_z <= 0 means lift-off
-  double friction = 1.0;        ///< mu of the road at the contact point
+/// The tire at one wheel load and road friction: the longitudinal and lateral curves (TMeasy's
+/// load law, mu/mu0 scaling F_M, F_S, s_M, s_S) and the normalizing factors s^x, s^y of
+/// eqs. (14-15). Lift-off (F_z <= 0) gives zero curves, s^x = s^y = 1 and so f = 0.
+struct TireCharacteristic {
+  TmeasyCurve x{};         ///< longitudinal, at the load and friction
+  TmeasyCurve y{};         ///< lateral
+  double normalize_x = 1;  ///< s^x
+  double normalize_y = 1;  ///< s^y
 };
 
-/// The tire's states s = (x_e, y_e): longitudinal and lateral deflection of the contact patch.
-struct TireDeflection {
-  double long_m = 0;  ///< x_e [m]
-  double lat_m = 0;   ///< y_e [m]
+/// What the tire sees of the wheel's motion: the contact point's velocity in the ground frame,
+/// the spin rate and the dynamic rolling radius.
+struct TireKinematics {
+  double long_speed_mps = 0;    ///< v_x
+  double lat_speed_mps = 0;     ///< v_y
+  double spin_radps = 0;        ///< omega
+  double rolling_radius_m = 0;  ///< r_D
 };
 
-/// Index of the inputs in the partial-derivative matrices of TireOutput.
-enum TirePartial : int {
-  kByLongSpeed = 0,       ///< d/dv_x
-  kByLatSpeed = 1,        ///< d/dv_y
-  kBySpin = 2,            ///< d/domega
-  kByLoad = 3,            ///< d/dF_z
-  kByLongDeflection = 4,  ///< d/dx_e
-  kByLatDeflection = 5,   ///< d/dy_e
-  kTirePartialCount = 6
+/// Eqs. (14-17) at one kinematic state.
+struct TireSlip {
+  double slip_x = 0;      ///< s_x^N (normalized, eq. 14)
+  double slip_y = 0;      ///< s_y^N (eq. 15)
+  double f_per_slip = 0;  ///< f(s) = F(s)/s [N], f(0) = dF0 of the slip direction
 };
 
-/// Everything a tire evaluation produces. Partials are exact derivatives of the smooth branch
-/// that is active (limiter and lift-off branches are piecewise constant in the inputs).
-struct TireOutput {
-  double long_force_n = 0;        ///< F_x = c_x x_e + d_x x_e' (eq. 22), or F_xM sign(F_x) (eq. 26)
-  double lat_force_n = 0;         ///< F_y = c_y y_e + d_y y_e', or F_yM sign(F_y)
-  double aligning_torque_nm = 0;  ///< M_z = -n F_y (pneumatic trail n)
-  double rolling_torque_nm = 0;   ///< T_R about the wheel axle, opposes omega; add to the wheel's
-                                  ///< spin equation: Theta omega' = T - r_D F_x + T_R
-  Eigen::Vector2d deflection_rate = Eigen::Vector2d::Zero();  ///< (x_e', y_e'): eq. (24), twin
-  /// df/ds of the force element: d x_e'/d x_e, d y_e'/d y_e (the rates are decoupled in s).
-  Eigen::Vector2d d_rate_d_deflection = Eigen::Vector2d::Zero();
-  /// d(x_e', y_e')/d(v_x, v_y, omega, F_z, x_e, y_e), columns indexed by TirePartial.
-  Eigen::Matrix<double, 2, kTirePartialCount> d_rate = Eigen::Matrix<double, 2, 6>::Zero();
-  /// d(F_x, F_y)/d(v_x, v_y, omega, F_z, x_e, y_e): the stiff damping paths through d_x, d_y
-  /// (dF_x/dv_x, dF_x/domega, dF_y/dv_y) that M_VI needs, and dF/dF_z.
-  Eigen::Matrix<double, 2, kTirePartialCount> d_force = Eigen::Matrix<double, 2, 6>::Zero();
-  double d_rolling_torque_d_spin = 0;  ///< dT_R/domega [N m s]
-  bool long_limited = false;           ///< eq. (26) active longitudinally
-  bool lat_limited = false;            ///< eq. (26) active laterally
-  bool lifted_off = false;             ///< F_z <= 0: no forces, the deflections relax
+/// What a force element needs of the tire for one step: its characteristic and kinematics at the
+/// start of the step, and f of that state (frozen over the step, eq. 24).
+struct TireContact {
+  TireCharacteristic characteristic{};
+  TireKinematics kinematics{};
+  double f_per_slip = 0;
 };
 
-/// Steady-state TMeasy forces (eqs. 14-17), without deflection dynamics.
+/// The characteristic at load F_z [N] and road friction mu (stage 1). Beyond 2 F_zN the degressive
+/// load law is kept physical (no force of the wrong sign, s_S > s_M > 0).
+[[nodiscard]] TireCharacteristic characteristic_at(const TmeasyParams& params, double load_n,
+                                                   double friction) noexcept;
+
+/// The generalized slip and f(s) of eqs. (14-17) with the small velocity v_N (stage 2).
+[[nodiscard]] TireSlip slip_of(const TireCharacteristic& c, const TireKinematics& k,
+                               double velocity_floor_mps) noexcept;
+
+/// F(s)/s of the combined characteristic for the normalized slips (eq. 16).
+[[nodiscard]] double f_per_slip_of(const TireCharacteristic& c, double slip_x,
+                                   double slip_y) noexcept;
+
+/// Steady-state forces of eqs. (16-17), F^S = f(s) s^N, at load F_z and friction mu (zero lifted
+/// off): the characteristic without deflection dynamics.
 struct SteadyStateForces {
-  double long_force_n = 0;          ///< F_x^S = f(s) s_x^N
-  double lat_force_n = 0;           ///< F_y^S = f(s) s_y^N
-  double long_slip_normalized = 0;  ///< s_x^N, eq. (14)
-  double lat_slip_normalized = 0;   ///< s_y^N, eq. (15)
-  double generalized_slip = 0;      ///< s
-  double f_n = 0;                   ///< f(s) = F(s)/s
+  double long_force_n = 0;  ///< F_x^S
+  double lat_force_n = 0;   ///< F_y^S
+  TireSlip slip{};
 };
+[[nodiscard]] SteadyStateForces steady_state_forces(const TmeasyParams& params,
+                                                    const TireKinematics& k, double load_n,
+                                                    double friction) noexcept;
 
-/// A TMeasy tire: holds its parameters (copied), evaluates without allocation, noexcept.
-class TmeasyTire {
- public:
-  explicit TmeasyTire(const TmeasyParams& params = default_215_55_r18()) noexcept;
+// ---- stage 3: eqs. (22-26) ----
 
-  [[nodiscard]] const TmeasyParams& params() const noexcept { return params_; }
-
-  /// Steady-state forces of eqs. (14-17) at the given inputs (zero if F_z <= 0).
-  [[nodiscard]] SteadyStateForces steady_state(const TireInput& in) const noexcept;
-
-  /// Eq. (24) and its lateral twin with the stand-still / locked-wheel behaviour (eq. 25), the
-  /// limiter (eq. 26), rolling resistance, aligning torque and all partials, at deflection s.
-  /// Lift-off (F_z <= 0) or mu <= 0: forces zero and x_e' = -(c_x/d_x) x_e (the free spring-
-  /// damper relaxes with zero force), likewise y_e.
-  void evaluate(const TireInput& in, const TireDeflection& deflection,
-                TireOutput& out) const noexcept;
-
-  /// Maximum longitudinal / lateral force F_xM, F_yM at load F_z and friction mu (the limits of
-  /// eq. 26); 0 if F_z <= 0.
-  [[nodiscard]] double max_long_force_n(double load_n, double friction) const noexcept;
-  [[nodiscard]] double max_lat_force_n(double load_n, double friction) const noexcept;
-
-  /// Eq. (26) applied after the implicit update (ForceElement::after_update): a deflection whose
-  /// spring force alone exceeds the limit is clamped to F_M / c (x_e' = 0 then holds F at F_M).
-  void clamp_deflection(double load_n, double friction, TireDeflection& deflection) const noexcept;
-
- private:
-  TmeasyParams params_;
+/// Eq. (24) in one direction, (d r_D|w| s + f) x_e' = -f v_slip - c x_e r_D|w| s, and its
+/// derivative by the deflection. At stand-still (v_slip = 0, w = 0) x_e' = 0: an existing
+/// deflection, and so an existing force, is held; locked (w = 0) x_e' = -v_slip (eq. 25).
+/// @param slip_speed_mps v_x - r_D w (laterally v_y); @param rolling_mps r_D |w|.
+struct DirectionalRate {
+  double rate = 0;                 ///< x_e' [m/s]
+  double d_rate_d_deflection = 0;  ///< dx_e'/dx_e [1/s]
 };
+[[nodiscard]] inline DirectionalRate directional_rate(double deflection_m, double slip_speed_mps,
+                                                      double rolling_mps, double normalize,
+                                                      double f_per_slip, double stiffness_npm,
+                                                      double damping_nspm) noexcept {
+  const double rs = rolling_mps * normalize;
+  const double denom = damping_nspm * rs + f_per_slip + 1e-9;
+  return {(-f_per_slip * slip_speed_mps - stiffness_npm * deflection_m * rs) / denom,
+          -stiffness_npm * rs / denom};
+}
+
+/// x_e', y_e' and their diagonal derivative at deflection s = (x_e, y_e), with f given.
+struct DeflectionRates {
+  Eigen::Vector2d rate = Eigen::Vector2d::Zero();
+  Eigen::Vector2d d_rate_d_deflection = Eigen::Vector2d::Zero();
+};
+[[nodiscard]] inline DeflectionRates deflection_rates(const TmeasyParams& p,
+                                                      const TireCharacteristic& c,
+                                                      const TireKinematics& k, double f_per_slip,
+                                                      const Eigen::Vector2d& s) noexcept {
+  const double rolling = k.rolling_radius_m * std::abs(k.spin_radps);
+  const DirectionalRate x = directional_rate(
+      s(0), k.long_speed_mps - k.rolling_radius_m * k.spin_radps, rolling, c.normalize_x,
+      f_per_slip, p.longitudinal_stiffness_npm, p.longitudinal_damping_nspm);
+  const DirectionalRate y =
+      directional_rate(s(1), k.lat_speed_mps, rolling, c.normalize_y, f_per_slip,
+                       p.lateral_stiffness_npm, p.lateral_damping_nspm);
+  DeflectionRates r;
+  r.rate << x.rate, y.rate;
+  r.d_rate_d_deflection << x.d_rate_d_deflection, y.d_rate_d_deflection;
+  return r;
+}
+
+/// rho = |(F_x/F_xM, F_y/F_yM)|, the elliptic measure of eq. (26): > 1 outside the ellipse of
+/// the maxima. No force capacity (F_M <= 0: lifted off): infinity.
+[[nodiscard]] inline double ellipse_ratio(const TireCharacteristic& c, double fx_n,
+                                          double fy_n) noexcept {
+  const double fxm = c.x.max_force_n, fym = c.y.max_force_n;
+  if (fxm <= 0 || fym <= 0) return std::numeric_limits<double>::infinity();
+  return std::sqrt((fx_n / fxm) * (fx_n / fxm) + (fy_n / fym) * (fy_n / fym));
+}
+
+/// Eq. (26) on the state, after the implicit update: a deflection whose spring force
+/// (c_x x_e, c_y y_e) lies outside the ellipse is scaled back onto it (no capacity: zero).
+inline void limit_deflection(const TmeasyParams& p, const TireCharacteristic& c,
+                             Eigen::Vector2d& s) noexcept {
+  const double rho =
+      ellipse_ratio(c, p.longitudinal_stiffness_npm * s(0), p.lateral_stiffness_npm * s(1));
+  if (rho == std::numeric_limits<double>::infinity()) {
+    s.setZero();
+  } else if (rho > 1.0) {
+    s(0) /= rho;
+    s(1) /= rho;
+  }
+}
+
+/// The dynamic force F = c x_e + d x_e' (eq. 22 and its lateral twin) at deflection s with f
+/// given, limited by eq. (26): outside the ellipse it is scaled back onto it.
+struct TireForces {
+  double long_force_n = 0;
+  double lat_force_n = 0;
+  bool limited = false;  ///< eq. (26) active (or no capacity)
+};
+[[nodiscard]] inline TireForces tire_forces(const TmeasyParams& p, const TireCharacteristic& c,
+                                            const TireKinematics& k, double f_per_slip,
+                                            const Eigen::Vector2d& s) noexcept {
+  const DeflectionRates r = deflection_rates(p, c, k, f_per_slip, s);
+  TireForces out;
+  out.long_force_n = p.longitudinal_stiffness_npm * s(0) + p.longitudinal_damping_nspm * r.rate(0);
+  out.lat_force_n = p.lateral_stiffness_npm * s(1) + p.lateral_damping_nspm * r.rate(1);
+  const double rho = ellipse_ratio(c, out.long_force_n, out.lat_force_n);
+  if (rho == std::numeric_limits<double>::infinity()) {
+    out = {0.0, 0.0, true};
+  } else if (rho > 1.0) {
+    out.long_force_n /= rho;
+    out.lat_force_n /= rho;
+    out.limited = true;
+  }
+  return out;
+}
+
+/// The stiff damping paths of eq. (24) at frozen f, the partials M_VI needs (method.md sec. 6):
+/// dF_x/dv_x = -d_x f / (d_x r_D|w| s^x + f) (the force resists the contact point's slip speed;
+/// dF_x/dw = -r_D dF_x/dv_x), dF_y/dv_y likewise. Given as the positive damping coefficients.
+struct DampingPaths {
+  double long_nspm = 0;
+  double lat_nspm = 0;
+};
+[[nodiscard]] inline DampingPaths damping_paths(const TmeasyParams& p, const TireCharacteristic& c,
+                                                const TireKinematics& k,
+                                                double f_per_slip) noexcept {
+  const double rolling = k.rolling_radius_m * std::abs(k.spin_radps);
+  const double dx = p.longitudinal_damping_nspm, dy = p.lateral_damping_nspm;
+  return {dx * f_per_slip / (dx * rolling * c.normalize_x + f_per_slip + 1e-9),
+          dy * f_per_slip / (dy * rolling * c.normalize_y + f_per_slip + 1e-9)};
+}
+
+/// The longitudinal force on the wheel's spin equation and its stiff derivative dF_x/dw (the
+/// damping path at frozen f), for the wheel-spin stage's implicit inertia.
+struct SpinForce {
+  double long_force_n = 0;
+  double d_force_d_spin = 0;  ///< [N s]
+};
+[[nodiscard]] inline SpinForce spin_force(const TmeasyParams& p, const TireCharacteristic& c,
+                                          const TireKinematics& k, double f_per_slip,
+                                          double long_deflection_m) noexcept {
+  const double r = k.rolling_radius_m;
+  const double rolling = r * std::abs(k.spin_radps);
+  const double cx = p.longitudinal_stiffness_npm, dx = p.longitudinal_damping_nspm;
+  const DirectionalRate x = directional_rate(long_deflection_m, k.long_speed_mps - r * k.spin_radps,
+                                             rolling, c.normalize_x, f_per_slip, cx, dx);
+  const double denom = dx * rolling * c.normalize_x + f_per_slip + 1e-9;
+  return {cx * long_deflection_m + dx * x.rate, dx * f_per_slip * r / denom};
+}
+
+/// The rolling resistance torque f_r r_D F_z, a dry-friction torque on the wheel's spin (it
+/// opposes the spin and holds a wheel at rest like a brake) [N m].
+[[nodiscard]] inline double rolling_resistance_torque_nm(const TmeasyParams& p, double load_n,
+                                                         double rolling_radius_m) noexcept {
+  return p.rolling_resistance * rolling_radius_m * load_n;
+}
 
 }  // namespace rig::model::tire

@@ -31,8 +31,9 @@ double engine_torque_nm(const DrivetrainParams& p, double throttle, double speed
   return thr * full - (1.0 - thr) * drag;
 }
 
-Drivetrain::Drivetrain(VehicleBus& bus, const DrivetrainParams& p, const HalfShafts* shafts)
-    : bus_(bus), p_(p), shafts_(shafts) {}
+Drivetrain::Drivetrain(const DrivetrainParams& p, VehicleState& state, const VehicleInputs& inputs,
+                       const VehicleWorkspace& work, const HalfShafts* shafts)
+    : p_(p), state_(state), inputs_(inputs), work_(work), shafts_(shafts) {}
 
 void Drivetrain::mass_matrix(const Vector& y, Matrix& m) const noexcept {
   (void)y;
@@ -40,8 +41,8 @@ void Drivetrain::mass_matrix(const Vector& y, Matrix& m) const noexcept {
 }
 
 double Drivetrain::coupling_torque_nm(double engine_radps, double carrier_radps) const noexcept {
-  if (bus_.total_ratio == 0) return 0.0;
-  const double turbine = bus_.total_ratio * carrier_radps;
+  if (work_.total_ratio == 0) return 0.0;
+  const double turbine = work_.total_ratio * carrier_radps;
   const double slip = engine_radps - turbine;
   const double lock = std::clamp(
       (std::abs(turbine) - p_.lockup_start_radps) / (p_.lockup_full_radps - p_.lockup_start_radps),
@@ -52,14 +53,14 @@ double Drivetrain::coupling_torque_nm(double engine_radps, double carrier_radps)
 
 void Drivetrain::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
   (void)y;
-  const double te = engine_torque_nm(p_, bus_.throttle, z(0));
+  const double te = engine_torque_nm(p_, inputs_.throttle, z(0));
   const double tc = coupling_torque_nm(z(0), z(1));
   double shafts = 0;
   if (shafts_ != nullptr) {
     shafts = shafts_->count() * shafts_->shaft_torque_nm(shafts_->state_const(), z(1));
   }
   q(0) = te - tc;
-  q(1) = p_.efficiency * bus_.total_ratio * tc - shafts;
+  q(1) = p_.efficiency * work_.total_ratio * tc - shafts;
 }
 
 }  // namespace rig::model::vehicle

@@ -8,6 +8,7 @@
 
 #include "model/solver/mechanical_block.h"
 #include "model/vehicle/half_shafts.h"
+#include "model/vehicle/vehicle_inputs.h"
 
 namespace rig::model::vehicle {
 
@@ -16,23 +17,26 @@ double engine_torque_nm(const DrivetrainParams& p, double throttle, double speed
 
 class Drivetrain final : public solver::MechanicalBlock<2> {
  public:
-  Drivetrain(VehicleBus& bus, const DrivetrainParams& p, const HalfShafts* shafts);
+  /// Its coordinates and speeds are state.drivetrain_y, drivetrain_z; it reads the throttle and
+  /// the engaged ratio (workspace).
+  Drivetrain(const DrivetrainParams& p, VehicleState& state, const VehicleInputs& inputs,
+             const VehicleWorkspace& work, const HalfShafts* shafts);
   [[nodiscard]] Eigen::Index size() const noexcept override { return 2; }
-  [[nodiscard]] Vector& coordinates() noexcept override { return y_; }
-  [[nodiscard]] Vector& speeds() noexcept override { return z_; }
-  [[nodiscard]] double carrier_speed_radps() const noexcept { return z_(1); }
-  [[nodiscard]] double engine_speed_radps() const noexcept { return z_(0); }
+  [[nodiscard]] Vector& coordinates() noexcept override { return state_.drivetrain_y; }
+  [[nodiscard]] Vector& speeds() noexcept override { return state_.drivetrain_z; }
+  [[nodiscard]] double carrier_speed_radps() const noexcept { return state_.drivetrain_z(1); }
+  [[nodiscard]] double engine_speed_radps() const noexcept { return state_.drivetrain_z(0); }
   void mass_matrix(const Vector& y, Matrix& m) const noexcept override;
   void applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept override;
   /// Converter + lock-up torque on the engine [N m].
   [[nodiscard]] double coupling_torque_nm(double engine_radps, double carrier_radps) const noexcept;
 
  private:
-  VehicleBus& bus_;
   const DrivetrainParams& p_;
+  VehicleState& state_;
+  const VehicleInputs& inputs_;
+  const VehicleWorkspace& work_;
   const HalfShafts* shafts_;
-  Vector y_ = Vector::Zero();
-  Vector z_ = Vector::Zero();
 };
 
 }  // namespace rig::model::vehicle

@@ -2,27 +2,26 @@
 
 namespace rig::model::vehicle {
 
-HalfShafts::HalfShafts(VehicleBus& bus, const DrivetrainParams& p,
+HalfShafts::HalfShafts(const DrivetrainParams& p, VehicleState& state, const VehicleWorkspace& work,
                        const std::array<int, kMaxWheels>& driven_wheels, int driven_count)
-    : bus_(bus),
+    : state_(state),
+      work_(work),
       c_(p.half_shaft_stiffness_nmpr),
       d_(p.half_shaft_damping_nmspr),
       wheels_(driven_wheels),
-      n_(driven_count),
-      s_(Vector::Zero(driven_count)) {}
+      n_(driven_count) {}
 
 double HalfShafts::shaft_torque_nm(const Vector& s, double carrier_radps) const noexcept {
   double sum_spin = 0;
   for (Eigen::Index i = 0; i < n_; ++i) {
-    sum_spin +=
-        bus_.wheels[static_cast<std::size_t>(wheels_[static_cast<std::size_t>(i)])].spin_radps;
+    sum_spin += state_.spin_radps[static_cast<std::size_t>(wheels_[static_cast<std::size_t>(i)])];
   }
   const double n = static_cast<double>(n_);
   return (c_ * s.sum() + d_ * (n * carrier_radps - sum_spin)) / n;
 }
 
 void HalfShafts::rate(const Vector& s, Vector& f) const noexcept {
-  const double t = shaft_torque_nm(s, bus_.carrier_speed_radps);
+  const double t = shaft_torque_nm(s, work_.carrier_speed_radps);
   for (Eigen::Index i = 0; i < n_; ++i) f(i) = (t - c_ * s(i)) / d_;
 }
 

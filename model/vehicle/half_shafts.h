@@ -10,21 +10,23 @@
 #include <array>
 
 #include "model/solver/force_element.h"
-#include "model/vehicle/vehicle_bus.h"
+#include "model/vehicle/vehicle_state.h"
+#include "model/vehicle/vehicle_workspace.h"
 
 namespace rig::model::vehicle {
 
 class HalfShafts final : public solver::ForceElement<Eigen::Dynamic> {
  public:
-  /// @param driven_wheels indices of the driven wheels (at least one)
-  HalfShafts(VehicleBus& bus, const DrivetrainParams& p,
+  /// @param driven_wheels indices of the driven wheels (at least one); the twists are
+  /// state.shaft_twist_rad, the wheel spins state.spin_radps, the carrier speed the workspace's.
+  HalfShafts(const DrivetrainParams& p, VehicleState& state, const VehicleWorkspace& work,
              const std::array<int, kMaxWheels>& driven_wheels, int driven_count);
   [[nodiscard]] Eigen::Index state_size() const noexcept override { return n_; }
-  [[nodiscard]] Vector& state() noexcept override { return s_; }
-  [[nodiscard]] const Vector& state_const() const noexcept { return s_; }
+  [[nodiscard]] Vector& state() noexcept override { return state_.shaft_twist_rad; }
+  [[nodiscard]] const Vector& state_const() const noexcept { return state_.shaft_twist_rad; }
   void rate(const Vector& s, Vector& f) const noexcept override;
   bool rate_jacobian(const Vector& s, Matrix& df_ds) const noexcept override;
-  /// The common shaft torque T at twists s, carrier speed w_c and the wheel spins in the bus.
+  /// The common shaft torque T at twists s, carrier speed w_c and the wheel spins of the state.
   [[nodiscard]] double shaft_torque_nm(const Vector& s, double carrier_radps) const noexcept;
   /// dT / d w_c and dT / d w_i.
   [[nodiscard]] double d_torque_d_carrier() const noexcept { return d_; }
@@ -33,12 +35,12 @@ class HalfShafts final : public solver::ForceElement<Eigen::Dynamic> {
   [[nodiscard]] int wheel(int i) const noexcept { return wheels_[static_cast<std::size_t>(i)]; }
 
  private:
-  VehicleBus& bus_;
+  VehicleState& state_;
+  const VehicleWorkspace& work_;
   double c_;
   double d_;
   std::array<int, kMaxWheels> wheels_;
   Eigen::Index n_;
-  Vector s_;
 };
 
 }  // namespace rig::model::vehicle

@@ -4,7 +4,9 @@
 
 namespace rig::model::vehicle {
 
-Steering::Steering(VehicleBus& bus, const SteeringParams& p) : bus_(bus), p_(p) {}
+Steering::Steering(const SteeringParams& p, VehicleState& state, const VehicleInputs& inputs,
+                   const VehicleWorkspace& work)
+    : p_(p), state_(state), inputs_(inputs), work_(work) {}
 
 void Steering::mass_matrix(const Vector& y, Matrix& m) const noexcept {
   (void)y;
@@ -18,20 +20,20 @@ double Steering::torsion_bar_torque_nm(const Vector& y, const Vector& z) const n
 }
 
 double Steering::assist_torque_nm(double torsion_bar_nm) const noexcept {
-  if (bus_.assist_from_input) return bus_.assist_input_nm;
+  if (inputs_.assist_from_input) return inputs_.assist_input_nm;
   return p_.assist_max_nm * std::tanh(p_.assist_gain * torsion_bar_nm / p_.assist_max_nm);
 }
 
 void Steering::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
   const double tb = torsion_bar_torque_nm(y, z);
-  double hand = bus_.hand_torque_cmd_nm;
+  double hand = inputs_.hand_torque_cmd_nm;
   if (!p_.torque_input) {
-    hand = p_.robot_stiffness_nmpr * (bus_.steering_angle_cmd_rad - y(0)) -
+    hand = p_.robot_stiffness_nmpr * (inputs_.steering_angle_cmd_rad - y(0)) -
            p_.robot_damping_nmspr * z(0);
   }
   const double friction = p_.rack_friction_n * std::tanh(z(1) / p_.rack_friction_speed_mps);
   q(0) = hand - tb - p_.column_damping_nmspr * z(0);
-  q(1) = (tb + assist_torque_nm(tb)) / p_.rack_per_pinion_m_per_rad - bus_.rack_force_n - friction;
+  q(1) = (tb + assist_torque_nm(tb)) / p_.rack_per_pinion_m_per_rad - work_.rack_force_n - friction;
 }
 
 bool Steering::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
@@ -39,7 +41,7 @@ bool Steering::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
   const double i = p_.rack_per_pinion_m_per_rad;
   const double c = p_.torsion_bar_stiffness_nmpr, d = p_.torsion_bar_damping_nmspr;
   double dassist = p_.assist_gain;  // d T_a / d T_tb of the boost curve
-  if (bus_.assist_from_input) {
+  if (inputs_.assist_from_input) {
     dassist = 0;
   } else {
     const double t = std::tanh(p_.assist_gain * torsion_bar_torque_nm(y, z) / p_.assist_max_nm);

@@ -5,20 +5,24 @@
 /// bar (its torque is what the assist senses), steering box ratio i_SB (rack travel per pinion
 /// angle), rack mass, rack dry friction (regularized, its steep slope in M_VI keeps it stable),
 /// assist torque on the pinion (input signal or built-in boost curve), and the tie-rod forces
-/// from the wheels (VehicleBus::rack_force_n). The wheel is driven by hand torque or, in
+/// from the wheels (VehicleWorkspace::rack_force_n). The wheel is driven by hand torque or, in
 /// angle mode, by a stiff position servo (a steering robot).
 
 #include "model/solver/mechanical_block.h"
-#include "model/vehicle/vehicle_bus.h"
+#include "model/vehicle/vehicle_inputs.h"
+#include "model/vehicle/vehicle_workspace.h"
 
 namespace rig::model::vehicle {
 
 class Steering final : public solver::MechanicalBlock<2> {
  public:
-  Steering(VehicleBus& bus, const SteeringParams& p);
+  /// Its coordinates and speeds are state.steering_y, steering_z; it reads the driver's and the
+  /// assist inputs and the rack force of the wheels (workspace).
+  Steering(const SteeringParams& p, VehicleState& state, const VehicleInputs& inputs,
+           const VehicleWorkspace& work);
   [[nodiscard]] Eigen::Index size() const noexcept override { return 2; }
-  [[nodiscard]] Vector& coordinates() noexcept override { return y_; }
-  [[nodiscard]] Vector& speeds() noexcept override { return z_; }
+  [[nodiscard]] Vector& coordinates() noexcept override { return state_.steering_y; }
+  [[nodiscard]] Vector& speeds() noexcept override { return state_.steering_z; }
   void mass_matrix(const Vector& y, Matrix& m) const noexcept override;
   void applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept override;
   bool force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
@@ -29,10 +33,10 @@ class Steering final : public solver::MechanicalBlock<2> {
   [[nodiscard]] double assist_torque_nm(double torsion_bar_nm) const noexcept;
 
  private:
-  VehicleBus& bus_;
   const SteeringParams& p_;
-  Vector y_ = Vector::Zero();
-  Vector z_ = Vector::Zero();
+  VehicleState& state_;
+  const VehicleInputs& inputs_;
+  const VehicleWorkspace& work_;
 };
 
 }  // namespace rig::model::vehicle

@@ -135,19 +135,20 @@ kinematics::WheelPose SuspensionKinematics::pose(int wheel, double hub_travel_m,
   return wheels_[static_cast<std::size_t>(wheel)].evaluate(hub_travel_m, rack_travel_m);
 }
 
-void SuspensionKinematics::update(const Eigen::VectorXd& y, VehicleBus& bus) const noexcept {
-  for (int i = 0; i < bus.wheel_count; ++i) {
+void SuspensionKinematics::update(const VehicleState& state,
+                                  VehicleWorkspace& work) const noexcept {
+  for (int i = 0; i < work.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    WheelBus& w = bus.wheels[k];
-    const double s = y(6 + i);
+    WheelWork& w = work.wheels[k];
+    const double s = state.framework_y(6 + i);
+    const double rack = state.rack_at_wheel_m[k];
     w.hub_travel_m = s;
-    w.steer_at_rack_m = w.rack_at_wheel_m;
+    w.steer_at_rack_m = rack;
     const Used& used = used_[k];
     if (!(used.x || used.y || used.alpha || used.gamma)) continue;  // all stay 0
     // one set of interpolation weights for the functions of eq. (29) this wheel has
     const WheelKinematics& wk = wheels_[k];
-    const kinematics::TableWeights tw =
-        kinematics::table_weights(wk.grid(), wk.method(), s, w.rack_at_wheel_m);
+    const kinematics::TableWeights tw = kinematics::table_weights(wk.grid(), wk.method(), s, rack);
     if (used.x) {
       const kinematics::TableValue x = wk.x().evaluate(tw);
       w.hub_x_m = x.value;

@@ -13,8 +13,8 @@
 #include <Eigen/Core>
 
 #include "model/kinematics/wheel_kinematics.h"
-#include "model/vehicle/vehicle_bus.h"
 #include "model/vehicle/vehicle_params.h"
+#include "model/vehicle/vehicle_workspace.h"
 
 namespace rig::model::vehicle {
 
@@ -39,9 +39,9 @@ class SuspensionKinematics {
                                            double rack_travel_m) const noexcept;
 
   /// Evaluates every wheel at the hub travel of the framework coordinates y = [body(6), s_i] and
-  /// the rack travel at the wheel of the last step (WheelBus::rack_at_wheel_m) and writes the
-  /// pose into the bus: hub offsets and tangent, camber, steer (gamma) and dgamma/du.
-  void update(const Eigen::VectorXd& y, VehicleBus& bus) const noexcept;
+  /// the rack travel at the wheel of the last step (VehicleState::rack_at_wheel_m) and writes the
+  /// pose into the workspace: hub offsets and tangent, camber, steer (gamma) and dgamma/du.
+  void update(const VehicleState& state, VehicleWorkspace& work) const noexcept;
 
  private:
   std::vector<kinematics::WheelKinematics> wheels_;

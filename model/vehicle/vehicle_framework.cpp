@@ -4,20 +4,20 @@
 
 #include <Eigen/LU>
 
-#include "model/vehicle/tire_deflection.h"
+#include "model/tire/tmeasy_tire.h"
+#include "model/tire/vertical_tire_force.h"
 
 namespace rig::model::vehicle {
 
-VehicleFramework::VehicleFramework(VehicleBus& bus, const VehicleParams& p)
-    : bus_(bus),
-      p_(p),
+VehicleFramework::VehicleFramework(const VehicleParams& p, VehicleState& state,
+                                   const VehicleWorkspace& work)
+    : p_(p),
+      state_(state),
+      work_(work),
+      road_(p.road),
       wheel_count_(2 * static_cast<int>(p.axles.size())),
       n_(6 + 2 * static_cast<Eigen::Index>(p.axles.size())) {
   const double g = p.road.gravity_mps2;
-  // Gravity in the road frame: the road plane is z = 0, grade and bank tilt gravity.
-  const double grade = std::atan(p.road.grade), bank = std::atan(p.road.bank);
-  gravity_road_ = Vec3(-g * std::sin(grade), -g * std::cos(grade) * std::sin(bank),
-                       -g * std::cos(grade) * std::cos(bank));
   const auto& c = p.chassis;
   inertia_ << c.inertia_kgm2[0], 0, -c.inertia_xz_kgm2, 0, c.inertia_kgm2[1], 0, -c.inertia_xz_kgm2,
       0, c.inertia_kgm2[2];
@@ -55,24 +55,21 @@ VehicleFramework::VehicleFramework(VehicleBus& bus, const VehicleParams& p)
     preload_[k] = a.spring_stiffness_npm * (heave_pitch(0) - a.position_x_m * heave_pitch(1));
     const double tire_load = preload_[k] + a.unsprung_mass_kg * g;
     const double centre_height =
-        a.tire.radius_unloaded_m - tire_load / a.tire.vertical_stiffness_npm;
+        a.tire.tmeasy.radius_unloaded_m - tire_load / a.tire.tmeasy.vertical_stiffness_npm;
     mount_[k] =
         Vec3(a.position_x_m, (i % 2 == 0 ? 0.5 : -0.5) * a.track_m, centre_height - c.cg_height_m);
   }
-  y_ = Vector::Zero(n_);
-  z_ = Vector::Zero(n_);
-  y_(2) = c.cg_height_m;
 }
 
 Vec3 VehicleFramework::wheel_centre(int i, double s) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  const WheelBus& w = bus_.wheels[k];
+  const WheelWork& w = work_.wheels[k];
   const double ds = s - w.hub_travel_m;
   return mount_[k] + Vec3(w.hub_x_m + w.hub_dx_ds * ds, w.hub_y_m + w.hub_dy_ds * ds, s);
 }
 
 Vec3 VehicleFramework::hub_axis(int i) const noexcept {
-  const WheelBus& w = bus_.wheels[static_cast<std::size_t>(i)];
+  const WheelWork& w = work_.wheels[static_cast<std::size_t>(i)];
   return {w.hub_dx_ds, w.hub_dy_ds, 1.0};
 }
 
@@ -118,52 +115,39 @@ WheelForces VehicleFramework::wheel_forces(const Vector& y, const Vector& z, int
 WheelContact VehicleFramework::contact(const Mat3& rot, const Vector& y, const Vector& z,
                                        int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  const WheelBus& w = bus_.wheels[k];
-  return wheel_contact(rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3),
-                       wheel_centre(i, y(6 + i)), hub_axis(i) * z(6 + i), w.spin_axis,
-                       p_.axles[k / 2].tire.radius_unloaded_m);
+  return wheel_contact(road_, rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3),
+                       wheel_centre(i, y(6 + i)), hub_axis(i) * z(6 + i), work_.wheels[k].spin_axis,
+                       p_.axles[k / 2].tire.tmeasy.radius_unloaded_m);
 }
 
 WheelForces VehicleFramework::wheel_forces(const Mat3& rot, const Vector& y, const Vector& z,
                                            int i) const noexcept {
+  return wheel_forces(contact(rot, y, z, i), y, z, i);
+}
+
+WheelForces VehicleFramework::wheel_forces(const WheelContact& c, const Vector& y, const Vector& z,
+                                           int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
   const AxleParams& a = p_.axles[k / 2];
-  const TireParams& t = a.tire;
-  const WheelBus& w = bus_.wheels[k];
+  const tire::TmeasyParams& t = a.tire.tmeasy;
+  const tire::TireCharacteristic& ch = work_.wheels[k].tire.characteristic;
   WheelForces out;
-  out.contact = contact(rot, y, z, i);
-  const WheelContact& c = out.contact;
-  out.load_n = vertical_tire_force_n(c.penetration_m, c.penetration_rate_mps,
-                                     t.vertical_stiffness_npm, t.vertical_damping_nspm);
-  // Tire forces through the deflection states (eqs. 22, 24) with the newest x_e, y_e, w.
-  const double r = dynamic_radius_m(t.radius_unloaded_m, c.penetration_m);
-  const TmeasySlip slip =
-      tmeasy_slip(w.curves, c.vx_mps, c.vy_mps, w.spin_radps, r, t.velocity_floor_mps);
+  out.load_n = tire::vertical_tire_force(t.vertical_stiffness_npm, t.vertical_damping_nspm,
+                                         c.penetration_m, c.penetration_rate_mps)
+                   .force_n;
+  // Tire forces through the deflection states (eqs. 22, 24, 26) with the newest x_e, y_e, w.
+  const tire::TireKinematics kin{
+      c.vx_mps, c.vy_mps, state_.spin_radps[k],
+      tire::dynamic_rolling_radius(t.radius_unloaded_m, c.penetration_m)};
+  const tire::TireSlip slip = tire::slip_of(ch, kin, t.velocity_floor_mps);
   out.slip_x = slip.slip_x;
   out.slip_y = slip.slip_y;
-  const double rolling = r * std::abs(w.spin_radps);
-  const double xe = bus_.deflection_m[2 * k], ye = bus_.deflection_m[2 * k + 1];
-  const double xr =
-      deflection_rate(xe, c.vx_mps - r * w.spin_radps, rolling, w.curves.normalize_x,
-                      slip.f_per_slip, t.longitudinal_stiffness_npm, t.longitudinal_damping_nspm);
-  const double yr = deflection_rate(ye, c.vy_mps, rolling, w.curves.normalize_y, slip.f_per_slip,
-                                    t.lateral_stiffness_npm, t.lateral_damping_nspm);
-  double fx = t.longitudinal_stiffness_npm * xe + t.longitudinal_damping_nspm * xr;
-  double fy = t.lateral_stiffness_npm * ye + t.lateral_damping_nspm * yr;
-  // eq. (26), elliptic: never more than the maximum force of the characteristic
-  const double fxm = w.curves.x.max_force_n, fym = w.curves.y.max_force_n;
-  if (fxm <= 0 || fym <= 0 || out.load_n <= 0) {
-    fx = 0;
-    fy = 0;
-  } else {
-    const double rho = std::sqrt((fx / fxm) * (fx / fxm) + (fy / fym) * (fy / fym));
-    if (rho > 1) {
-      fx /= rho;
-      fy /= rho;
-    }
+  if (out.load_n > 0) {  // lifted off now: no tire force
+    const tire::TireForces f =
+        tire::tire_forces(t, ch, kin, slip.f_per_slip, state_.tire_deflection_m[k]);
+    out.force_x_n = f.long_force_n;
+    out.force_y_n = f.lat_force_n;
   }
-  out.force_x_n = fx;
-  out.force_y_n = fy;
   // Suspension: preloaded spring, bump/rebound damper, stops, anti-roll bar (wheel rates).
   const double s = y(6 + i), sd = z(6 + i), s_other = y(6 + (i ^ 1));
   double fs = preload_[k] + a.spring_stiffness_npm * s +
@@ -178,7 +162,7 @@ WheelForces VehicleFramework::wheel_forces(const Mat3& rot, const Vector& y, con
 void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
   const Mat3 rot = body_to_road(y(3), y(4), y(5));
   const Vec3 v = z.segment<3>(0), w = z.segment<3>(3);
-  const Vec3 g = rot.transpose() * gravity_road_;
+  const Vec3 g = rot.transpose() * road_.gravity_mps2();
   const double mc = p_.chassis.mass_kg;
   q.setZero(n_);
   // chassis: gravity, velocity-dependent acceleration a_0 = w x v, gyroscopic (explicit terms)
@@ -193,8 +177,8 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
     const Vec3 es = hub_axis(i);
     const Vec3 a0 = w.cross(v) + w.cross(w.cross(r)) + 2.0 * w.cross(es * sd);
     const Vec3 fw = mw * (g - a0);
-    const WheelForces wf = wheel_forces(rot, y, z, i);
-    const WheelContact& c = wf.contact;
+    const WheelContact c = contact(rot, y, z, i);
+    const WheelForces wf = wheel_forces(c, y, z, i);
     // tire force acting at the wheel centre (the spin DOF carries the moment r F_x) plus the
     // reactions of the drive and brake torques on the chassis
     const Vec3 f = fw + wf.force_x_n * c.ex + wf.force_y_n * c.ey + wf.load_n * c.normal;
@@ -202,7 +186,7 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
     // moment of the contact force about the wheel centre, except its spin-axis part
     const Vec3 m_contact = (c.lever_m - r).cross(f - fw);
     tr += r.cross(f) + m_contact - m_contact.dot(c.spin_axis) * c.spin_axis -
-          (bus_.wheels[k].shaft_torque_nm + bus_.wheels[k].brake_torque_nm) * c.spin_axis;
+          (work_.wheels[k].shaft_torque_nm + work_.wheels[k].brake_torque_nm) * c.spin_axis;
     q(6 + i) = es.dot(f) - wf.suspension_n;  // J_v hub column e_s
   }
   q.segment<3>(0) = ft;
@@ -218,7 +202,7 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
   for (int i = 0; i < wheel_count_; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const AxleParams& ax = p_.axles[k / 2];
-    const TireParams& t = ax.tire;
+    const tire::TmeasyParams& t = ax.tire.tmeasy;
     const Eigen::Index h = 6 + i;
     // suspension on the hub coordinates (relative DOF: acts on q_h only)
     const double s = y(h);
@@ -232,18 +216,15 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
     if (c.penetration_m <= 0) continue;
     const Vec3 centre = wheel_centre(i, y(h));
     const Vec3 es = hub_axis(i);
-    const WheelBus& w = bus_.wheels[k];
-    const double r = dynamic_radius_m(t.radius_unloaded_m, c.penetration_m);
-    const TmeasySlip slip =
-        tmeasy_slip(w.curves, c.vx_mps, c.vy_mps, w.spin_radps, r, t.velocity_floor_mps);
-    const double rolling = r * std::abs(w.spin_radps);
+    const tire::TireCharacteristic& ch = work_.wheels[k].tire.characteristic;
+    const tire::TireKinematics kin{
+        c.vx_mps, c.vy_mps, state_.spin_radps[k],
+        tire::dynamic_rolling_radius(t.radius_unloaded_m, c.penetration_m)};
+    const tire::TireSlip slip = tire::slip_of(ch, kin, t.velocity_floor_mps);
     // d F / d v along each direction: vertical damping; eq. (24) damping paths at fixed f
-    const double dx =
-        t.longitudinal_damping_nspm * slip.f_per_slip /
-        (t.longitudinal_damping_nspm * rolling * w.curves.normalize_x + slip.f_per_slip + 1e-9);
-    const double dy =
-        t.lateral_damping_nspm * slip.f_per_slip /
-        (t.lateral_damping_nspm * rolling * w.curves.normalize_y + slip.f_per_slip + 1e-9);
+    const tire::DampingPaths paths = tire::damping_paths(t, ch, kin, slip.f_per_slip);
+    const double dx = paths.long_nspm;
+    const double dy = paths.lat_nspm;
     // the rows have non-zeros only in the body columns 0..5 and the hub column h: update the
     // 7 x 7 sub-block instead of a dense outer product
     const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};

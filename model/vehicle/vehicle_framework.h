@@ -11,29 +11,22 @@
 
 #include <array>
 
+#include "model/road/road.h"
 #include "model/solver/mechanical_block.h"
-#include "model/vehicle/vehicle_bus.h"
+#include "model/vehicle/vehicle_state.h"
+#include "model/vehicle/vehicle_workspace.h"
 #include "model/vehicle/wheel_contact.h"
 
 namespace rig::model::vehicle {
 
-/// What one wheel contributes at one framework state.
-struct WheelForces {
-  WheelContact contact;
-  double load_n = 0;
-  double force_x_n = 0;
-  double force_y_n = 0;
-  double slip_x = 0;
-  double slip_y = 0;
-  double suspension_n = 0;  ///< pushes the wheel down (compression +)
-};
-
 class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
  public:
-  VehicleFramework(VehicleBus& bus, const VehicleParams& p);
+  /// Reads the wheels' spins and tire deflections from `state` and their pose, tire contact and
+  /// torques from `work`; its coordinates and speeds are state.framework_y, framework_z.
+  VehicleFramework(const VehicleParams& p, VehicleState& state, const VehicleWorkspace& work);
   [[nodiscard]] Eigen::Index size() const noexcept override { return n_; }
-  [[nodiscard]] Vector& coordinates() noexcept override { return y_; }
-  [[nodiscard]] Vector& speeds() noexcept override { return z_; }
+  [[nodiscard]] Vector& coordinates() noexcept override { return state_.framework_y; }
+  [[nodiscard]] Vector& speeds() noexcept override { return state_.framework_z; }
   void kinematics_inverse(const Vector& y, Matrix& k_inv) const noexcept override;
   void mass_matrix(const Vector& y, Matrix& m) const noexcept override;
   void applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept override;
@@ -47,6 +40,9 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   /// Forces of wheel i at state (y, z) with the newest tire, wheel and steering states.
   [[nodiscard]] WheelForces wheel_forces(const Vector& y, const Vector& z, int i) const noexcept;
   [[nodiscard]] WheelForces wheel_forces(const Mat3& rot, const Vector& y, const Vector& z,
+                                         int i) const noexcept;
+  /// The same at the wheel's contact c (contact(rot, y, z, i)).
+  [[nodiscard]] WheelForces wheel_forces(const WheelContact& c, const Vector& y, const Vector& z,
                                          int i) const noexcept;
   /// Contact kinematics of wheel i at (y, z).
   [[nodiscard]] WheelContact contact(const Vector& y, const Vector& z, int i) const noexcept;
@@ -67,17 +63,19 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   }
   /// Static vertical force of the support (ChassisParams::supported) on this unit [N, up].
   [[nodiscard]] double support_load_n() const noexcept { return support_load_n_; }
-  /// Gravity in the road frame (grade and bank tilt it).
-  [[nodiscard]] const Vec3& gravity_road() const noexcept { return gravity_road_; }
+  /// The road under the wheels (gravity in the road frame, height, normal, friction).
+  [[nodiscard]] const road::Road& road() const noexcept { return road_; }
   /// Centre of wheel i at hub travel s (body axes, from the CG): the design position plus the
-  /// offsets of eq. (29), linear in s about the step's pose (VehicleBus, SuspensionKinematics).
+  /// offsets of eq. (29), linear in s about the step's pose (WheelWork, SuspensionKinematics).
   [[nodiscard]] Vec3 wheel_centre(int i, double hub_travel_m) const noexcept;
   /// d(wheel centre)/ds = (dx/dz, dy/dz, 1): the hub-travel column of J_v and J_P.
   [[nodiscard]] Vec3 hub_axis(int i) const noexcept;
 
  private:
-  VehicleBus& bus_;
   const VehicleParams& p_;
+  VehicleState& state_;
+  const VehicleWorkspace& work_;
+  road::Road road_;
   int wheel_count_;
   Eigen::Index n_;
   std::array<int, kMaxWheels> axle_of_{};
@@ -86,9 +84,6 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   Mat3 inertia_;
   double total_mass_kg_ = 0;
   double support_load_n_ = 0;
-  Vec3 gravity_road_;
-  Vector y_;
-  Vector z_;
 };
 
 }  // namespace rig::model::vehicle

@@ -1,34 +1,24 @@
 #pragma once
 /// @file
 /// Constant parameters of the generic vehicle (method.md sec. 2 and 6). Plain data, SI units;
-/// filled by rig/vehicle_config from TOML. No behaviour here.
+/// filled by io/config from TOML. No behaviour here.
 
 #include <array>
 #include <string>
 #include <vector>
 
 #include "model/kinematics/kinematic_table.h"
+#include "model/road/road.h"
 #include "model/tire/tmeasy_params.h"
 
 namespace rig::model::vehicle {
 
-/// TMeasy tire: the characteristic curves of model/tire (tire::TmeasyCurvePair: dF0, F_M, s_M,
-/// F_S, s_S at F_zN and 2 F_zN, degressive load law; measured at mu0 = 1), plus the vertical
-/// tire and the deflection dynamics of eqs. (22-24).
+/// A wheel's tire: the TMeasy parameters of model/tire (the curves at F_zN and 2 F_zN, the
+/// deflection dynamics of eqs. 22-24, the vertical tire, rolling resistance, v_N), plus the spin
+/// inertia of wheel, tire and brake disc.
 struct TireParams {
-  double radius_unloaded_m = 0.3;
-  double vertical_stiffness_npm = 2.5e5;
-  double vertical_damping_nspm = 500;
-  double nominal_load_n = 4000;
-  tire::TmeasyCurvePair longitudinal{};       ///< F_x(s_x) at F_zN and 2 F_zN
-  tire::TmeasyCurvePair lateral{};            ///< F_y(s_y) at F_zN and 2 F_zN
-  double longitudinal_stiffness_npm = 1.8e5;  ///< c_x, eq. (22)
-  double longitudinal_damping_nspm = 500;     ///< d_x
-  double lateral_stiffness_npm = 1.2e5;       ///< c_y
-  double lateral_damping_nspm = 400;          ///< d_y
-  double spin_inertia_kgm2 = 1.0;             ///< wheel + tire + brake disc about the spin axis
-  double rolling_resistance = 0.01;           ///< coefficient f_r [-], torque r f_r F_z
-  double velocity_floor_mps = 0.01;           ///< v_N of eqs. (14-15)
+  tire::TmeasyParams tmeasy{};
+  double spin_inertia_kgm2 = 1.0;  ///< about the spin axis
 };
 
 /// Suspension kinematics of eq. (29) of an axle's LEFT wheel: wheel-centre x, y (offsets from the
@@ -143,23 +133,13 @@ struct ChassisParams {
   double payload_x_m = 0;
 };
 
-/// Road plane (eq. of the contact): z = 0 of the road frame; grade and bank only tilt gravity.
-struct RoadParams {
-  double grade = 0;       ///< tan of the uphill slope in +x [-] (0.2 = 20 %)
-  double bank = 0;        ///< tan of the bank slope, uphill in +y [-]
-  double friction = 1.0;  ///< mu, scales F_M and F_S of all tires
-  /// Split mu: mu under the right-hand wheels (odd wheel index); < 0: the same as friction.
-  double friction_right = -1.0;
-  double gravity_mps2 = 9.81;
-};
-
 struct VehicleParams {
   std::string name;
   ChassisParams chassis{};
   std::vector<AxleParams> axles;  ///< front to rear
   SteeringParams steering{};
   DrivetrainParams drivetrain{};
-  RoadParams road{};
+  road::RoadParams road{};
 };
 
 }  // namespace rig::model::vehicle

@@ -1,9 +1,10 @@
 #pragma once
 /// @file
-/// Contact kinematics of one wheel on the road plane z = 0 (road frame), as a function of the
-/// framework state: contact point, tire axes, contact point velocity, tire penetration.
-/// The wheel centre and its orientation come from the kinematics of eq. (29) (the framework).
+/// Contact kinematics of one wheel on the road (model/road), as a function of the framework
+/// state: contact point, tire axes, contact point velocity, tire penetration. The wheel centre
+/// and its orientation come from the kinematics of eq. (29) (the framework).
 
+#include "model/road/road.h"
 #include "model/vehicle/chassis_kinematics.h"
 
 namespace rig::model::vehicle {
@@ -14,21 +15,24 @@ struct WheelContact {
   Vec3 spin_axis;       ///< wheel spin axis, body axes
   double vx_mps = 0;    ///< contact point velocity along ex
   double vy_mps = 0;    ///< along ey
-  double penetration_m = 0;  ///< r0 - wheel centre height (> 0 in contact)
+  double penetration_m = 0;  ///< r0 - wheel centre height above the road (> 0 in contact)
   double penetration_rate_mps = 0;
 };
 
 /// @param centre_m wheel centre relative to the CG (body axes); @param hub_velocity_mps its
 /// velocity relative to the body from hub travel (the kinematics' tangent times the travel rate);
 /// @param spin_axis the wheel's spin axis Rz(gamma) Rx(alpha) e_y (gamma, alpha of eq. 29; see
-/// set_wheel_orientation). The contact point is the point of the road below the centre.
-inline WheelContact wheel_contact(const Mat3& r_body_to_road, const Vec3& cg_road_m,
-                                  const Vec3& v_body, const Vec3& w_body, const Vec3& centre_m,
-                                  const Vec3& hub_velocity_mps, const Vec3& spin_axis,
-                                  double radius_unloaded_m) noexcept {
+/// set_wheel_orientation). The contact point is the point of the road below the centre, along
+/// the road's normal there.
+inline WheelContact wheel_contact(const road::Road& road, const Mat3& r_body_to_road,
+                                  const Vec3& cg_road_m, const Vec3& v_body, const Vec3& w_body,
+                                  const Vec3& centre_m, const Vec3& hub_velocity_mps,
+                                  const Vec3& spin_axis, double radius_unloaded_m) noexcept {
   WheelContact c;
-  const double height = cg_road_m.z() + r_body_to_road.row(2).dot(centre_m);
-  c.normal = r_body_to_road.row(2).transpose();
+  const double x = cg_road_m.x() + r_body_to_road.row(0).dot(centre_m);
+  const double y = cg_road_m.y() + r_body_to_road.row(1).dot(centre_m);
+  const double height = cg_road_m.z() + r_body_to_road.row(2).dot(centre_m) - road.height_m(x, y);
+  c.normal = r_body_to_road.transpose() * road.normal(x, y);
   c.lever_m = centre_m - height * c.normal;
   c.spin_axis = spin_axis;
   c.ex = c.spin_axis.cross(c.normal).normalized();
@@ -39,19 +43,6 @@ inline WheelContact wheel_contact(const Mat3& r_body_to_road, const Vec3& cg_roa
   c.penetration_m = radius_unloaded_m - height;
   c.penetration_rate_mps = -c.normal.dot(vp);
   return c;
-}
-
-/// Vertical tire force from deflection with lift-off (never pulls).
-inline double vertical_tire_force_n(double penetration_m, double penetration_rate_mps,
-                                    double stiffness_npm, double damping_nspm) noexcept {
-  if (penetration_m <= 0) return 0.0;
-  const double f = stiffness_npm * penetration_m + damping_nspm * penetration_rate_mps;
-  return f > 0 ? f : 0.0;
-}
-
-/// TMeasy dynamic rolling radius r_D = 2/3 r0 + 1/3 r_S.
-inline double dynamic_radius_m(double radius_unloaded_m, double penetration_m) noexcept {
-  return radius_unloaded_m - (penetration_m > 0 ? penetration_m : 0.0) / 3.0;
 }
 
 }  // namespace rig::model::vehicle

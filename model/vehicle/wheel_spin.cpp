@@ -2,81 +2,75 @@
 
 #include <cmath>
 
-#include "model/vehicle/tire_deflection.h"
+#include "model/tire/tmeasy_tire.h"
 
 namespace rig::model::vehicle {
 
-WheelSpinStage::WheelSpinStage(VehicleBus& bus, const VehicleParams& p,
-                               const std::array<int, kMaxWheels>& axle_of_wheel,
-                               const HalfShafts* shafts, Steering& steering,
-                               const Drivetrain& drivetrain)
-    : bus_(bus),
-      p_(p),
-      axle_of_wheel_(axle_of_wheel),
-      shafts_(shafts),
-      steering_(steering),
-      drivetrain_(drivetrain) {
+WheelSpinStage::WheelSpinStage(const VehicleParams& p, VehicleState& state,
+                               const VehicleInputs& inputs, VehicleWorkspace& work,
+                               const HalfShafts* shafts, const Drivetrain& drivetrain)
+    : p_(p), state_(state), inputs_(inputs), work_(work), shafts_(shafts), drivetrain_(drivetrain) {
   if (shafts_ != nullptr) {
     for (int i = 0; i < shafts_->count(); ++i)
       driven_[static_cast<std::size_t>(shafts_->wheel(i))] = true;
   }
 }
 
-void WheelSpinStage::advance(double h) noexcept {
+void WheelSpinStage::tie_rods() noexcept {
   // Tie-rod linkage (quasi-static compliance) from the new rack travel; the wheel's steer is
   // gamma(z, u) of the kinematic tables (SuspensionKinematics, eq. 29).
-  const double rack = steering_.coordinates()(1);
+  const double rack = state_.steering_y(1);
   const SteeringParams& sp = p_.steering;
   double rack_force = 0;
-  for (int i = 0; i < bus_.wheel_count; ++i) {
-    WheelBus& w = bus_.wheels[static_cast<std::size_t>(i)];
-    if (!p_.axles[static_cast<std::size_t>(axle_of_wheel_[static_cast<std::size_t>(i)])].steered)
-      continue;
+  for (int i = 0; i < work_.wheel_count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    WheelWork& w = work_.wheels[k];
+    if (!p_.axles[k / 2].steered) continue;
     // the aligning torque F_y n loads the rack by virtual work: F_rack = M dgamma/du
-    w.tie_rod_force_n = w.force_y_n * sp.trail_m * w.steer_d_du;
-    w.rack_at_wheel_m = rack - w.tie_rod_force_n / sp.tie_rod_stiffness_npm;
+    w.tie_rod_force_n = state_.lateral_force_n[k] * sp.trail_m * w.steer_d_du;
+    state_.rack_at_wheel_m[k] = rack - w.tie_rod_force_n / sp.tie_rod_stiffness_npm;
     // gamma of eq. (29) at the new rack travel, linear in u about the step's pose
     set_wheel_orientation(
-        w, w.steer_kinematic_rad + w.steer_d_du * (w.rack_at_wheel_m - w.steer_at_rack_m),
+        w, w.steer_kinematic_rad + w.steer_d_du * (state_.rack_at_wheel_m[k] - w.steer_at_rack_m),
         w.camber_rad);
     rack_force += w.tie_rod_force_n;
   }
-  bus_.rack_force_n = rack_force;
+  work_.rack_force_n = rack_force;
+}
 
-  bus_.carrier_speed_radps = drivetrain_.carrier_speed_radps();  // newest (eq. 8 order)
+void WheelSpinStage::advance(double h) noexcept {
+  tie_rods();
+  work_.carrier_speed_radps = drivetrain_.carrier_speed_radps();  // newest (eq. 8 order)
   double shaft_torque = 0;
   if (shafts_ != nullptr)
-    shaft_torque = shafts_->shaft_torque_nm(shafts_->state_const(), bus_.carrier_speed_radps);
-  for (int i = 0; i < bus_.wheel_count; ++i) {
+    shaft_torque = shafts_->shaft_torque_nm(shafts_->state_const(), work_.carrier_speed_radps);
+  for (int i = 0; i < work_.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    WheelBus& w = bus_.wheels[k];
-    const TireParams& tire = p_.axles[static_cast<std::size_t>(axle_of_wheel_[k])].tire;
-    const double r = w.radius_dynamic_m;
-    const double xe = bus_.deflection_m[2 * k];
-    const double f_per_slip = w.f_per_slip;  // eq. (16) at the start of the step
-    const double rolling = r * std::abs(w.spin_radps);
-    const double rate =
-        deflection_rate(xe, w.vx_mps - r * w.spin_radps, rolling, w.curves.normalize_x, f_per_slip,
-                        tire.longitudinal_stiffness_npm, tire.longitudinal_damping_nspm);
-    const double fx = tire.longitudinal_stiffness_npm * xe + tire.longitudinal_damping_nspm * rate;
-    // d F_x / d w through the damping path (eq. 24, at fixed f)
-    const double denom =
-        tire.longitudinal_damping_nspm * rolling * w.curves.normalize_x + f_per_slip + 1e-9;
-    const double dfx_dw = tire.longitudinal_damping_nspm * f_per_slip * r / denom;
-    double inertia = tire.spin_inertia_kgm2 + h * r * dfx_dw;
+    WheelWork& w = work_.wheels[k];
+    const AxleParams& axle = p_.axles[k / 2];
+    const tire::TmeasyParams& tire = axle.tire.tmeasy;
+    const tire::TireContact& contact = w.tire;
+    const double r = contact.kinematics.rolling_radius_m;
+    // F_x on the spin with the new deflection and d F_x / d w through the damping path (eq. 24,
+    // at the f of the start of the step)
+    const tire::SpinForce fx = tire::spin_force(tire, contact.characteristic, contact.kinematics,
+                                                contact.f_per_slip, state_.tire_deflection_m[k](0));
+    double inertia = axle.tire.spin_inertia_kgm2 + h * r * fx.d_force_d_spin;
     const double ts = driven_[k] ? shaft_torque : 0.0;
     if (driven_[k])
       inertia += h * shafts_->d_torque_d_carrier() / static_cast<double>(shafts_->count());
     w.shaft_torque_nm = ts;
-    const double other = ts - r * fx;
+    const double other = ts - r * fx.long_force_n;
     // Stick prediction: the friction torque that makes w(k+1) = 0.
-    const double stick = other + inertia * w.spin_radps / h;
-    const double capacity = w.brake_capacity_nm + tire.rolling_resistance * r * w.load_n;
+    double& spin = state_.spin_radps[k];
+    const double stick = other + inertia * spin / h;
+    const double capacity = axle.brake_gain_nm_per_pa * inputs_.brake_pressure_pa[k] +
+                            tire::rolling_resistance_torque_nm(tire, w.load_n, r);
     double brake = stick;
     if (std::abs(stick) > capacity) brake = std::copysign(capacity, stick);
     w.brake_torque_nm = -brake;
-    w.spin_radps += h * (other - brake) / inertia;
-    if (std::abs(stick) <= capacity) w.spin_radps = 0;
+    spin += h * (other - brake) / inertia;
+    if (std::abs(stick) <= capacity) spin = 0;
   }
 }
 

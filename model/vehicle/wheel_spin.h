@@ -19,18 +19,21 @@ namespace rig::model::vehicle {
 
 class WheelSpinStage final : public solver::Stage {
  public:
-  WheelSpinStage(VehicleBus& bus, const VehicleParams& p,
-                 const std::array<int, kMaxWheels>& axle_of_wheel, const HalfShafts* shafts,
-                 Steering& steering, const Drivetrain& drivetrain);
+  /// Advances state.spin_radps and state.rack_at_wheel_m; writes the wheels' orientation,
+  /// tie-rod, shaft and brake torques and the rack force into the workspace.
+  WheelSpinStage(const VehicleParams& p, VehicleState& state, const VehicleInputs& inputs,
+                 VehicleWorkspace& work, const HalfShafts* shafts, const Drivetrain& drivetrain);
   void advance(double h) noexcept override;
 
  private:
-  VehicleBus& bus_;
+  void tie_rods() noexcept;
+
   const VehicleParams& p_;
-  std::array<int, kMaxWheels> axle_of_wheel_;
+  VehicleState& state_;
+  const VehicleInputs& inputs_;
+  VehicleWorkspace& work_;
   std::array<bool, kMaxWheels> driven_{};
   const HalfShafts* shafts_;
-  Steering& steering_;
   const Drivetrain& drivetrain_;
 };
 

@@ -2,14 +2,14 @@
 // steady-state forces alone (eqs. 14-17).
 #include <benchmark/benchmark.h>
 
-#include "model/tire/tmeasy_tire.h"
+#include "model/tire/tmeasy_dual_law.h"
 
 namespace {
 
-using rig::model::tire::TireDeflection;
-using rig::model::tire::TireInput;
-using rig::model::tire::TireOutput;
-using rig::model::tire::TmeasyTire;
+using rig::model::tire::legacy::TireDeflection;
+using rig::model::tire::legacy::TireInput;
+using rig::model::tire::legacy::TireOutput;
+using rig::model::tire::legacy::TmeasyTire;
 
 TireInput cornering_input() {
   TireInput in;

@@ -681,9 +681,10 @@ TEST(Combination, CarTowBarCarStraightTowingThenBraking) {
   double mass = towed.chassis.mass_kg, rolling = 0;
   for (const auto& a : towed.axles) {
     mass += 2 * a.unsprung_mass_kg;
-    rolling += 2 * a.unsprung_mass_kg * a.tire.rolling_resistance;
+    rolling += 2 * a.unsprung_mass_kg * a.tire.tmeasy.rolling_resistance;
   }
-  rolling += towed.chassis.mass_kg * towed.axles[0].tire.rolling_resistance;  // all tires equal
+  rolling +=
+      towed.chassis.mass_kg * towed.axles[0].tire.tmeasy.rolling_resistance;  // all tires equal
   rolling *= towed.road.gravity_mps2;
   const double v = r.towing_speed_mps;
   const double drag = 0.5 * towed.chassis.air_density_kgpm3 * towed.chassis.drag_area_m2 * v * v;

@@ -1,53 +1,48 @@
-// Road plane: grade, bank, normal, friction, projection, derivatives, zero allocation.
+// The road plane: gravity tilted by grade and bank, height and normal, split friction, zero
+// allocation.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "model/road/road_plane.h"
+#include "model/road/road.h"
 #include "tests/support/alloc_counter.h"
 
 namespace rig::model::road {
 namespace {
 
-TEST(RoadPlane, TenPercentGradeRisesOneMetrePerTenMetres) {
-  const RoadPlane road({grade_percent_to_rad(10.0), 0.0, 0.8});
-  EXPECT_NEAR(road.params().grade_rad, std::atan(0.1), 1e-15);
-  EXPECT_NEAR(road.height_m(10.0, 3.0), 1.0, 1e-12);
-  EXPECT_NEAR(road.height_m(-5.0, 0.0), -0.5, 1e-12);
-  EXPECT_EQ(road.friction(12.0, -4.0), 0.8);
-  const Eigen::Vector3d& n = road.normal(0, 0);
-  EXPECT_NEAR(n.norm(), 1.0, 1e-15);
-  EXPECT_NEAR(n.dot(Eigen::Vector3d(1.0, 0.0, 0.1)), 0.0, 1e-15);  // normal to the slope line
-  EXPECT_NEAR(n.z(), std::cos(std::atan(0.1)), 1e-15);
-  // on a grade of angle a, gravity's component along the road is g sin(a)
-  EXPECT_NEAR(-n.x(), std::sin(std::atan(0.1)), 1e-15);
+TEST(Road, TenPercentGradeTiltsGravityByAtanOfTheGrade) {
+  const Road road({0.1, 0.0, 0.8, -1.0, 9.81});
+  const Eigen::Vector3d& g = road.gravity_mps2();
+  // on a grade of angle a = atan(0.1): g sin(a) down the slope (-x), g cos(a) into the road
+  EXPECT_NEAR(g.x(), -9.81 * 0.1 / std::sqrt(1.01), 1e-14);
+  EXPECT_EQ(g.y(), 0.0);
+  EXPECT_NEAR(g.z(), -9.81 / std::sqrt(1.01), 1e-14);
+  EXPECT_NEAR(g.norm(), 9.81, 1e-14);
+  EXPECT_EQ(road.height_m(10.0, 3.0), 0.0);  // the vehicle's frame is the road's
+  EXPECT_EQ(road.normal(10.0, 3.0), Eigen::Vector3d::UnitZ());
+  EXPECT_EQ(road.friction(false), 0.8);
+  EXPECT_EQ(road.friction(true), 0.8);  // no split
 }
 
-TEST(RoadPlane, BankGradientNormalAndProjection) {
-  const RoadPlane road({0.05, 0.1, 1.0});
-  const double x = 3.0, y = -2.0, e = 1e-6;
-  const Eigen::Vector2d g = road.height_gradient(x, y);
-  EXPECT_NEAR(g.x(), (road.height_m(x + e, y) - road.height_m(x - e, y)) / (2 * e), 1e-9);
-  EXPECT_NEAR(g.y(), (road.height_m(x, y + e) - road.height_m(x, y - e)) / (2 * e), 1e-9);
-  EXPECT_NEAR(road.height_m(0.0, 1.0), std::tan(0.1), 1e-15);  // left side raised
-  const Eigen::Vector3d p(x, y, 2.0);
-  const Eigen::Vector3d c = road.project(p);
-  EXPECT_NEAR(c.z(), road.height_m(c.x(), c.y()), 1e-12);  // on the plane
-  EXPECT_NEAR((p - c).norm(), road.distance_m(p), 1e-12);
-  EXPECT_NEAR((p - c).normalized().dot(road.normal(x, y)), 1.0, 1e-12);
-  const Eigen::Vector3d below(0, 0, -0.1);
-  EXPECT_LT(road.distance_m(below), 0.0);
+TEST(Road, BankTiltsGravityToTheLowSideAndSplitMuActsOnTheRight) {
+  const Road road({0.0, 0.05, 1.0, 0.2, 9.81});
+  const Eigen::Vector3d& g = road.gravity_mps2();
+  // uphill in +y: gravity pulls towards -y by g sin(atan(0.05))
+  EXPECT_NEAR(g.y(), -9.81 * 0.05 / std::sqrt(1.0025), 1e-14);
+  EXPECT_NEAR(g.z(), -9.81 / std::sqrt(1.0025), 1e-14);
+  EXPECT_NEAR(g.norm(), 9.81, 1e-14);
+  EXPECT_EQ(road.friction(false), 1.0);
+  EXPECT_EQ(road.friction(true), 0.2);
 }
 
-TEST(RoadPlane, QueriesAllocateNothing) {
-  const RoadPlane road({0.1, 0.02, 0.9});
+TEST(Road, QueriesAllocateNothing) {
+  const Road road({0.1, 0.02, 0.9, 0.3, 9.81});
   double sum = 0;
   Eigen::internal::set_is_malloc_allowed(false);
   const rig::test::AllocationCounter counter;
   for (int i = 0; i < 100; ++i) {
-    const Eigen::Vector3d p(i, -i, 1.0);
-    sum += road.height_m(i, i) + road.normal(i, i).x() + road.project(p).z() +
-           road.height_gradient(i, 0).y() + road.friction(0, 0);
+    sum += road.height_m(i, -i) + road.normal(i, i).z() + road.gravity_mps2().x() +
+           road.friction(i % 2 == 1);
   }
   const auto n = counter.count();
   Eigen::internal::set_is_malloc_allowed(true);

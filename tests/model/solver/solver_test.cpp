@@ -10,10 +10,10 @@
 #include "model/paper/quarter_car.h"
 #include "model/solver/arrowhead_factorization.h"
 #include "model/solver/coupled_stepper.h"
-#include "model/solver/engine.h"
 #include "model/solver/finite_difference.h"
 #include "model/solver/force_element_stepper.h"
 #include "model/solver/mechanical_stepper.h"
+#include "model/solver/sequential_stepper.h"
 #include "tests/support/alloc_counter.h"
 
 namespace rig::model::solver {
@@ -55,14 +55,14 @@ struct LinearOscillator final : MechanicalBlock<1> {
   }
 };
 
-TEST(Engine, OneStepEqualsHandComputedEq8) {
+TEST(SequentialStepper, OneStepEqualsHandComputedEq8) {
   LinearOscillator osc;
   LinearElement el;
   el.v = &osc.z;
   osc.s = &el.s;
   ForceElementStepper<1> fe(el);
   MechanicalStepper<1> ms(osc);
-  Engine engine(ms);
+  SequentialStepper engine(ms);
   engine.add_stage(fe);
   const double h = 0.01;
   const double s0 = el.s(0), x0 = osc.y(0), v0 = osc.z(0);
@@ -80,7 +80,7 @@ TEST(Engine, OneStepEqualsHandComputedEq8) {
   EXPECT_NEAR(ms.modified_mass_matrix()(0, 0), m_vi, 1e-12);
 }
 
-TEST(Engine, FiniteDifferenceModeMatchesAnalytic) {
+TEST(SequentialStepper, FiniteDifferenceModeMatchesAnalytic) {
   LinearOscillator a, b;
   LinearElement ea, eb;
   ea.v = &a.z;
@@ -100,7 +100,7 @@ TEST(Engine, FiniteDifferenceModeMatchesAnalytic) {
   EXPECT_NEAR(ea.s(0), eb.s(0), 1e-9);
 }
 
-TEST(Engine, StiffSpringStableAtLargeStep) {
+TEST(SequentialStepper, StiffSpringStableAtLargeStep) {
   // k/m = 1e8 1/s^2: explicit Euler would explode at h = 1e-2 (|1 + i h w| > 1); the modified
   // implicit Euler decays.
   LinearOscillator osc;
@@ -368,7 +368,7 @@ TEST(CoupledStepper, EnginesJoinedByALinearConstraint) {
   o2.y(0) = 0.02;
   ForceElementStepper<1> f1(e1), f2(e2);
   MechanicalStepper<1> m1(o1), m2(o2);
-  Engine engine1(m1), engine2(m2);
+  SequentialStepper engine1(m1), engine2(m2);
   engine1.add_stage(f1);
   engine2.add_stage(f2);
   OffsetConstraint c;
@@ -385,7 +385,7 @@ TEST(CoupledStepper, EnginesJoinedByALinearConstraint) {
   EXPECT_GT(std::abs(coupled.multipliers()(0)), 1e-3);
 }
 
-TEST(Engine, StagesRunInOrderWithTheNewestStates) {
+TEST(SequentialStepper, StagesRunInOrderWithTheNewestStates) {
   // The framework's force reads the element's state: after a step it must have used s(k+1).
   LinearOscillator osc;
   LinearElement el;
@@ -395,7 +395,7 @@ TEST(Engine, StagesRunInOrderWithTheNewestStates) {
   osc.d = 0.0;
   ForceElementStepper<1> fe(el);
   MechanicalStepper<1> ms(osc);
-  Engine engine(ms);
+  SequentialStepper engine(ms);
   engine.add_stage(fe);
   const double v0 = osc.z(0);
   engine.step(0.01);
@@ -428,7 +428,7 @@ TEST(NoAllocation, SolverStepsAllocateNothing) {
   osc.s = &el.s;
   ForceElementStepper<1> fe(el, JacobianMode::kFiniteDifference);
   MechanicalStepper<1> ms(osc, JacobianMode::kFiniteDifference);
-  Engine engine(ms);
+  SequentialStepper engine(ms);
   engine.add_stage(fe);
   ArrowBlock dense_block;
   MechanicalStepper<Eigen::Dynamic> dense(dense_block, JacobianMode::kFiniteDifference);

@@ -8,11 +8,11 @@
 #include <random>
 
 #include "model/tire/tmeasy_characteristic.h"
-#include "model/tire/tmeasy_tire.h"
+#include "model/tire/tmeasy_dual_law.h"
 #include "model/tire/vertical_tire_force.h"
 #include "tests/support/alloc_counter.h"
 
-namespace rig::model::tire {
+namespace rig::model::tire::legacy {
 namespace {
 
 constexpr double kR = 0.3;   // rolling radius for the tests [m]
@@ -96,8 +96,8 @@ TEST(TmeasyLoad, DefaultSetIsValidAndBadValuesAreNamed) {
   ASSERT_NE(check_params(p), nullptr);
   EXPECT_STREQ(check_params(p), "longitudinal.at_double: need 0 < s_M < s_S");
   p = default_215_55_r18();
-  p.slip_velocity_mps = 0;
-  EXPECT_STREQ(check_params(p), "slip_velocity_mps: v_N must be > 0");
+  p.velocity_floor_mps = 0;
+  EXPECT_STREQ(check_params(p), "velocity_floor_mps: v_N must be > 0");
 }
 
 TEST(TmeasyCharacteristic, SegmentsByHand) {
@@ -405,11 +405,10 @@ TEST(VerticalTire, ForceWithLiftOffAndRollingRadius) {
   EXPECT_EQ(off.force_n, 0.0);
   EXPECT_EQ(off.d_force_d_deflection, 0.0);
   EXPECT_FALSE(vertical_tire_force(200e3, 5000, 0.001, -1.0).in_contact);  // rebounding fast
-  // r_D = 2/3 r_0 + 1/3 r_S, r_S = r_0 - F_z/c_z
-  EXPECT_DOUBLE_EQ(dynamic_rolling_radius(0.3469, 3500, 200e3),
+  // r_D = 2/3 r_0 + 1/3 r_S, r_S = r_0 - dz (dz = F_z/c_z = 17.5 mm at 3500 N)
+  EXPECT_DOUBLE_EQ(dynamic_rolling_radius(0.3469, 0.0175),
                    2.0 / 3 * 0.3469 + (0.3469 - 0.0175) / 3);
-  EXPECT_DOUBLE_EQ(dynamic_rolling_radius(0.3469, -5, 200e3), 0.3469);
-  EXPECT_DOUBLE_EQ(dynamic_rolling_radius_d_load(3500, 200e3), -1.0 / 600e3);
+  EXPECT_DOUBLE_EQ(dynamic_rolling_radius(0.3469, -0.001), 0.3469);  // lifted off
 }
 
 TEST(TmeasyTire, EvaluationAllocatesNothing) {
@@ -432,9 +431,10 @@ TEST(TmeasyTire, EvaluationAllocatesNothing) {
 }
 
 }  // namespace
-}  // namespace rig::model::tire
+}  // namespace rig::model::tire::legacy
 
-// The tire as a solver force element, advanced by the solver's eq. (8) force-element stepper.
+// The one tire law as a solver force element (tmeasy_force_element.h), advanced by the solver's
+// eq. (8) force-element stepper.
 #include "model/solver/finite_difference.h"
 #include "model/solver/force_element_stepper.h"
 #include "model/tire/tmeasy_force_element.h"
@@ -442,48 +442,64 @@ TEST(TmeasyTire, EvaluationAllocatesNothing) {
 namespace rig::model::tire {
 namespace {
 
+constexpr double kRadius = 0.3;
+
+/// A contact at rest or sliding: the characteristic at F_z and mu, f of the kinematics.
+TireContact contact_at(const TmeasyParams& p, double load_n, const TireKinematics& k) {
+  TireContact c;
+  c.characteristic = characteristic_at(p, load_n, 1.0);
+  c.kinematics = k;
+  c.f_per_slip = slip_of(c.characteristic, k, p.velocity_floor_mps).f_per_slip;
+  return c;
+}
+
 TEST(TmeasyForceElement, StepperHoldsAtRestAndFollowsALockedWheel) {
-  TmeasyForceElement element;
+  const TmeasyParams p = default_215_55_r18();
+  TireContact contact = contact_at(p, 3500.0, {0.0, 0.0, 0.0, kRadius});
+  Eigen::Vector2d s(0.01, -0.004);
+  TmeasyForceElement element(p, contact, s);
   solver::ForceElementStepper<2> stepper(element);
-  element.input() = TireInput{0.0, 0.0, 0.0, kR, 3500.0, 1.0};
-  element.state() << 0.01, -0.004;
   Eigen::internal::set_is_malloc_allowed(false);
   const rig::test::AllocationCounter counter;
   for (int k = 0; k < 1000; ++k) stepper.advance(1e-3);  // stand-still: held (eq. 24)
   const auto allocations = counter.count();
   Eigen::internal::set_is_malloc_allowed(true);
   EXPECT_EQ(allocations, 0u);
-  EXPECT_EQ(element.state()(0), 0.01);
-  EXPECT_EQ(element.state()(1), -0.004);
-  TireOutput out;
-  element.force(out);
-  EXPECT_DOUBLE_EQ(out.long_force_n, 2500.0);
-  // locked wheel sliding at 0.2 m/s: x_e' = -v_x (eq. 25) until F = c_x x_e + d_x x_e' reaches
-  // -F_xM, i.e. x_e = -(F_xM - d_x v_x)/c_x = -0.014 m; then eq. (26) holds x_e (x_e' = 0)
-  element.input().long_speed_mps = 0.2;
-  element.state() << 0.0, 0.0;
+  EXPECT_EQ(s(0), 0.01);
+  EXPECT_EQ(s(1), -0.004);
+  const TireForces held =
+      tire_forces(p, contact.characteristic, contact.kinematics, contact.f_per_slip, s);
+  EXPECT_DOUBLE_EQ(held.long_force_n, 2500.0);
+  EXPECT_DOUBLE_EQ(held.lat_force_n, -700.0);
+  EXPECT_FALSE(held.limited);
+  // locked wheel sliding at 0.2 m/s: x_e' = -v_x (eq. 25) until the spring force reaches
+  // F_xM = 3900 N at 3500 N, i.e. x_e = -F_xM/c_x = -0.0156 m, where eq. (26) holds it; the
+  // force c_x x_e + d_x x_e' = -3900 - 400 N is limited to -F_xM
+  contact = contact_at(p, 3500.0, {0.2, 0.0, 0.0, kRadius});
+  s.setZero();
   for (int k = 0; k < 10; ++k) stepper.advance(1e-3);
-  EXPECT_NEAR(element.state()(0), -0.002, 1e-12);
+  EXPECT_NEAR(s(0), -0.002, 1e-12);
   for (int k = 0; k < 200; ++k) stepper.advance(1e-3);
-  EXPECT_NEAR(element.state()(0), -(3900.0 - 2000.0 * 0.2) / 250e3, 1e-12);
-  element.force(out);
-  EXPECT_TRUE(out.long_limited);
-  EXPECT_NEAR(out.long_force_n, -3900.0, 1e-9);
+  EXPECT_NEAR(s(0), -3900.0 / 250e3, 1e-12);
+  const TireForces sliding =
+      tire_forces(p, contact.characteristic, contact.kinematics, contact.f_per_slip, s);
+  EXPECT_TRUE(sliding.limited);
+  EXPECT_NEAR(sliding.long_force_n, -3900.0, 1e-9);
 }
 
 TEST(TmeasyForceElement, RateJacobianMatchesFiniteDifferences) {
-  TmeasyForceElement element;
-  element.input() = TireInput{12.0, 0.4, 38.0, kR, 3000.0, 1.0};
-  element.state() << 0.001, -0.002;
+  const TmeasyParams p = default_215_55_r18();
+  const TireContact contact = contact_at(p, 3000.0, {12.0, 0.4, 38.0, kRadius});
+  Eigen::Vector2d s(0.001, -0.002);
+  TmeasyForceElement element(p, contact, s);
   Eigen::Matrix2d analytic, fd;
-  ASSERT_TRUE(element.rate_jacobian(element.state(), analytic));
+  ASSERT_TRUE(element.rate_jacobian(s, analytic));
   Eigen::Vector2d work, f0, f1;
-  solver::finite_difference_rate_jacobian<2>(element, element.state(), fd, work, f0, f1);
+  solver::finite_difference_rate_jacobian<2>(element, s, fd, work, f0, f1);
   EXPECT_NEAR((analytic - fd).norm(), 0.0, 1e-4 * analytic.norm());
   // by hand, eq. (24): d x_e'/d x_e = -c_x r|w| s^x / (d_x r|w| s^x + f)
-  const double a = kR * 38.0 * hand_norm_x(hand_long(3000), hand_lat(3000));
-  const double f = element.tire().steady_state(element.input()).f_n;
-  EXPECT_NEAR(analytic(0, 0), -250e3 * a / (2000 * a + f), 1e-9);
+  const double a = kRadius * 38.0 * contact.characteristic.normalize_x;
+  EXPECT_NEAR(analytic(0, 0), -250e3 * a / (2000 * a + contact.f_per_slip), 1e-9);
   EXPECT_EQ(analytic(0, 1), 0.0);
 }
 

@@ -14,8 +14,8 @@
 #include "io/config/config_error.h"
 #include "io/config/vehicle_file.h"
 #include "model/solver/finite_difference.h"
+#include "model/tire/tmeasy_tire.h"
 #include "model/vehicle/suspension_kinematics.h"
-#include "model/vehicle/tmeasy.h"
 #include "model/vehicle/vehicle_model.h"
 #include "tests/support/driver_inputs.h"
 
@@ -154,8 +154,10 @@ TEST(SuspensionKinematics, FrontToeGivesOpposedCorneringForces) {
   m.fill_report(r);
   const auto& fl = r.units[0].wheels[0];
   const auto& fr = r.units[0].wheels[1];
-  const double c_fl = tmeasy_curves(p.axles[0].tire, fl.load_n, 1.0).y.initial_slope_n;
-  const double c_fr = tmeasy_curves(p.axles[0].tire, fr.load_n, 1.0).y.initial_slope_n;
+  const double c_fl =
+      tire::characteristic_at(p.axles[0].tire.tmeasy, fl.load_n, 1.0).y.initial_slope_n;
+  const double c_fr =
+      tire::characteristic_at(p.axles[0].tire.tmeasy, fr.load_n, 1.0).y.initial_slope_n;
   // the tie rods yield to the aligning torque F_y n: compliance steer
   // d gamma = -F_y n (dgamma/du)^2 / c_tie, dgamma/du = 1/arm at small angles
   const SteeringParams& st = p.steering;
@@ -243,7 +245,7 @@ TEST(SuspensionKinematics, FrameworkJacobiansMatchFiniteDifferencesWithGeometry)
   EXPECT_LT((hub(az) - hub(fz)).norm(), 2e-2 * hub(fz).norm()) << hub(az) << "\n" << hub(fz);
   EXPECT_NEAR(ay(2, 2), fy(2, 2), 2e-3 * std::abs(fy(2, 2)));
   // the hub travel moves the centre outwards (scrub): a camber/scrub geometry is really active
-  EXPECT_GT(std::abs(m.bus().wheels[0].hub_dy_ds), 0.05);
+  EXPECT_GT(std::abs(m.workspace().wheels[0].hub_dy_ds), 0.05);
 }
 
 }  // namespace

@@ -15,8 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "io/config/vehicle_file.h"
-#include "model/tire/tmeasy_tire.h"
-#include "model/vehicle/tmeasy.h"
+#include "model/tire/tmeasy_dual_law.h"
 #include "model/vehicle/vehicle_model.h"
 #include "rig/driver/path_driver.h"
 #include "tests/support/alloc_counter.h"
@@ -41,27 +40,23 @@ void run(VehicleModel& m, Signals& s, double seconds,
   }
 }
 
-// The vehicle's f(s) (tmeasy.h, shared per wheel and step) is model/tire's characteristic: the
-// steady-state forces of eqs. (16-17) equal TmeasyTire::steady_state for the same tire, load,
-// friction and slip velocities, in adhesion, near the maximum and in sliding.
+// The one TMeasy law (model/tire: characteristic_at + slip_of, as the vehicle calls them per
+// wheel and step) against the former dual-number implementation's steady state (eqs. 16-17),
+// in adhesion, near the maximum and in sliding, for the sedan's tire.
 TEST(Vehicle, TireCharacteristicIsModelTire) {
-  const TireParams& t = sedan().axles[0].tire;
-  tire::TmeasyParams tp;
-  tp.nominal_load_n = t.nominal_load_n;
-  tp.longitudinal = t.longitudinal;
-  tp.lateral = t.lateral;
-  tp.slip_velocity_mps = t.velocity_floor_mps;
-  const tire::TmeasyTire reference(tp);
+  const tire::TmeasyParams& t = sedan().axles[0].tire.tmeasy;
+  const tire::legacy::TmeasyTire reference(t);
   const double r = 0.3;
   int compared = 0;
   for (double load : {1500.0, 3500.0, 6000.0}) {
     for (double mu : {1.0, 0.5}) {
-      const TmeasyLoadCurves c = tmeasy_curves(t, load, mu);
+      const tire::TireCharacteristic c = tire::characteristic_at(t, load, mu);
       for (const auto& [vx, vy, w] :
            {std::array{20.0, 0.0, 20.0 / r * 1.02}, std::array{20.0, 1.0, 20.0 / r},
             std::array{20.0, -3.0, 50.0}, std::array{10.0, 2.0, 0.0}, std::array{0.0, 0.0, 0.0}}) {
-        const TmeasySlip v = tmeasy_slip(c, vx, vy, w, r, t.velocity_floor_mps);
-        const tire::SteadyStateForces ref = reference.steady_state({vx, vy, w, r, load, mu});
+        const tire::TireSlip v = tire::slip_of(c, {vx, vy, w, r}, t.velocity_floor_mps);
+        const tire::legacy::SteadyStateForces ref =
+            reference.steady_state({vx, vy, w, r, load, mu});
         EXPECT_NEAR(v.f_per_slip * v.slip_x, ref.long_force_n, 1e-9 * load) << load << " " << vx;
         EXPECT_NEAR(v.f_per_slip * v.slip_y, ref.lat_force_n, 1e-9 * load) << load << " " << vy;
         ++compared;
@@ -70,7 +65,8 @@ TEST(Vehicle, TireCharacteristicIsModelTire) {
   }
   EXPECT_EQ(compared, 30);
   // lift-off: no force
-  EXPECT_EQ(tmeasy_slip(tmeasy_curves(t, 0.0, 1.0), 10, 1, 0, r, 0.01).f_per_slip, 0.0);
+  EXPECT_EQ(tire::slip_of(tire::characteristic_at(t, 0.0, 1.0), {10, 1, 0, r}, 0.01).f_per_slip,
+            0.0);
 }
 
 TEST(Vehicle, StaticEquilibrium) {
@@ -261,7 +257,8 @@ TEST(Vehicle, SteadyStateCircleUndersteerGradientAndSaturation) {
     run(m, s, 8.0, control);
     const double v = s[Signal::kVehicleSpeed], r = s[Signal::kYawRate];
     const double ay = v * r;  // steady state: a_y = v^2 / R = v r
-    const double steer = 0.5 * (m.bus().wheels[0].steer_rad + m.bus().wheels[1].steer_rad);
+    const double steer =
+        0.5 * (m.workspace().wheels[0].steer_rad + m.workspace().wheels[1].steer_rad);
     const double y = steer - l * r / v;  // delta - L / R = K a_y
     std::printf("circle v %.2f m/s: a_y %.3f m/s^2, delta - L/R = %.5f rad\n", v, ay, y);
     sxx += ay * ay, sxy += ay * y, sx += ay, sy += y, n += 1;
@@ -283,8 +280,8 @@ TEST(Vehicle, SteadyStateCircleUndersteerGradientAndSaturation) {
     run(st, s0, 2.0, nullptr);
     fzf = st.wheel_load_n(0) + st.wheel_load_n(1);
     fzr = st.wheel_load_n(2) + st.wheel_load_n(3);
-    cf = 2 * tmeasy_curves(p.axles[0].tire, fzf / 2, 1.0).y.initial_slope_n;
-    cr = 2 * tmeasy_curves(p.axles[1].tire, fzr / 2, 1.0).y.initial_slope_n;
+    cf = 2 * tire::characteristic_at(p.axles[0].tire.tmeasy, fzf / 2, 1.0).y.initial_slope_n;
+    cr = 2 * tire::characteristic_at(p.axles[1].tire.tmeasy, fzr / 2, 1.0).y.initial_slope_n;
   }
   const double k_linear = fzf / 9.81 / cf - fzr / 9.81 / cr;
   std::printf(

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The modified implicit Euler engine for one vehicle (or any system of eqs. 1-3): the
+/// The sequential modified implicit Euler step of one vehicle (or any system of eqs. 1-3): the
 /// sequential update of eq. (8) - force elements, then subsystems, then the framework, each
 /// using the newest states of the others. A new subsystem is a new stage, not a change here.
 
@@ -16,10 +16,10 @@ namespace rig::model::solver {
 /// Runs its stages in the order they were added, then the framework. The stages and the
 /// framework are owned by the caller (the model), which also owns the blocks. Built once; step(),
 /// begin_step() and finish_step() never allocate.
-class Engine final : public CouplableSystem {
+class SequentialStepper final : public CouplableSystem {
  public:
   /// @param framework the framework's stepper (usually a MechanicalStepper), advanced last.
-  explicit Engine(CouplableSystem& framework);
+  explicit SequentialStepper(CouplableSystem& framework);
 
   /// Adds a force-element or subsystem stage. Order matters: add force elements first, then
   /// subsystems (eq. 8). Construction time only (allocates).

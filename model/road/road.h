@@ -1,0 +1,51 @@
+#pragma once
+/// @file
+/// The road the tires touch. Today one plane: z = 0 of the road frame, in which the vehicle's
+/// coordinates are given; its grade and bank tilt gravity instead of the plane, so that a vehicle
+/// on a grade keeps its design height. Friction mu may differ under the right-hand wheels (split
+/// mu). Queries are per contact and evaluation: noexcept, allocation-free, inline.
+
+#include <Eigen/Core>
+
+namespace rig::model::road {
+
+struct RoadParams {
+  double grade = 0;       ///< tan of the uphill slope in +x [-] (0.2 = 20 %)
+  double bank = 0;        ///< tan of the bank slope, uphill in +y [-]
+  double friction = 1.0;  ///< mu, scales F_M and F_S of all tires
+  /// Split mu: mu under the right-hand wheels; < 0: the same as friction.
+  double friction_right = -1.0;
+  double gravity_mps2 = 9.81;
+};
+
+class Road {
+ public:
+  explicit Road(const RoadParams& params) noexcept;
+
+  [[nodiscard]] const RoadParams& params() const noexcept { return params_; }
+  /// Gravity in the road frame [m/s^2]: the grade tilts it towards -x, the bank towards -y.
+  [[nodiscard]] const Eigen::Vector3d& gravity_mps2() const noexcept { return gravity_; }
+  /// Height of the surface above z = 0 of the road frame at (x, y) [m].
+  [[nodiscard]] double height_m(double x_m, double y_m) const noexcept {
+    (void)x_m;
+    (void)y_m;
+    return 0.0;
+  }
+  /// Unit normal of the surface at (x, y), road frame.
+  [[nodiscard]] const Eigen::Vector3d& normal(double x_m, double y_m) const noexcept {
+    (void)x_m;
+    (void)y_m;
+    return normal_;
+  }
+  /// mu under a left-hand (right_side = false) or right-hand wheel.
+  [[nodiscard]] double friction(bool right_side) const noexcept {
+    return right_side && params_.friction_right >= 0 ? params_.friction_right : params_.friction;
+  }
+
+ private:
+  RoadParams params_;
+  Eigen::Vector3d gravity_;
+  Eigen::Vector3d normal_ = Eigen::Vector3d::UnitZ();
+};
+
+}  // namespace rig::model::road

@@ -1,0 +1,106 @@
+#include "model/vehicle/vehicle_blocks.h"
+
+#include <algorithm>
+
+#include "model/tire/vertical_tire_force.h"
+
+namespace rig::model::vehicle {
+namespace {
+
+solver::ArrowheadPartition framework_partition(const VehicleParams& p) {
+  solver::ArrowheadPartition partition;
+  partition.body_size = 6;
+  partition.leaf_sizes.assign(p.axles.size(), 2);  // two hub travels per axle
+  return partition;
+}
+
+std::unique_ptr<HalfShafts> make_shafts(const VehicleParams& p, VehicleState& state,
+                                        const VehicleWorkspace& work) {
+  const DrivenWheels driven = driven_wheels(p);
+  if (driven.count == 0) return nullptr;
+  return std::make_unique<HalfShafts>(p.drivetrain, state, work, driven.wheel, driven.count);
+}
+
+}  // namespace
+
+DrivenWheels driven_wheels(const VehicleParams& p) noexcept {
+  DrivenWheels d;
+  for (int i = 0; i < 2 * static_cast<int>(p.axles.size()); ++i) {
+    if (p.axles[static_cast<std::size_t>(i / 2)].driven)
+      d.wheel[static_cast<std::size_t>(d.count++)] = i;
+  }
+  return d;
+}
+
+VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
+                             const VehicleInputs& inputs, VehicleWorkspace& work)
+    : p_(p),
+      state_(state),
+      inputs_(inputs),
+      work_(work),
+      kinematics_(p),
+      framework_(p, state, work),
+      shafts_(make_shafts(p, state, work)),
+      drivetrain_(p.drivetrain, state, inputs, work, shafts_.get()),
+      steering_(p.steering, state, inputs, work),
+      wheel_stage_(p, state, inputs, work, shafts_.get(), drivetrain_),
+      drivetrain_stepper_(drivetrain_),
+      steering_stepper_(steering_),
+      framework_stepper_(framework_, framework_partition(p)),
+      sequence_(framework_stepper_) {
+  // eq. (8) order: force elements (tires, half shafts), subsystems, framework last
+  for (int i = 0; i < work.wheel_count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    tires_.push_back(std::make_unique<tire::TmeasyForceElement>(
+        p.axles[k / 2].tire.tmeasy, work.wheels[k].tire, state.tire_deflection_m[k]));
+    tire_steppers_.push_back(std::make_unique<solver::ForceElementStepper<2>>(*tires_.back()));
+    sequence_.add_stage(*tire_steppers_.back());
+  }
+  if (shafts_) {
+    shaft_stepper_ = std::make_unique<solver::ForceElementStepper<Eigen::Dynamic>>(*shafts_);
+    sequence_.add_stage(*shaft_stepper_);
+  }
+  if (shafts_) sequence_.add_stage(drivetrain_stepper_);
+  if (std::any_of(p.axles.begin(), p.axles.end(), [](const AxleParams& a) { return a.steered; }))
+    sequence_.add_stage(steering_stepper_);
+  sequence_.add_stage(wheel_stage_);
+}
+
+void VehicleBlocks::update_contacts() noexcept {
+  const auto& y = state_.framework_y;
+  const auto& z = state_.framework_z;
+  kinematics_.update(state_, work_);  // eq. (29) at y_V(k), before any contact is evaluated
+  const Mat3 rot = body_to_road(y(3), y(4), y(5));
+  for (int i = 0; i < work_.wheel_count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    WheelWork& w = work_.wheels[k];
+    const tire::TmeasyParams& t = p_.axles[k / 2].tire.tmeasy;
+    const WheelContact c = framework_.contact(rot, y, z, i);
+    w.load_n = tire::vertical_tire_force(t.vertical_stiffness_npm, t.vertical_damping_nspm,
+                                         c.penetration_m, c.penetration_rate_mps)
+                   .force_n;
+    tire::TireContact& tc = w.tire;
+    tc.kinematics = {c.vx_mps, c.vy_mps, state_.spin_radps[k],
+                     tire::dynamic_rolling_radius(t.radius_unloaded_m, c.penetration_m)};
+    tc.characteristic =
+        tire::characteristic_at(t, w.load_n, framework_.road().friction(i % 2 == 1));
+    tc.f_per_slip =
+        tire::slip_of(tc.characteristic, tc.kinematics, t.velocity_floor_mps).f_per_slip;
+  }
+  work_.carrier_speed_radps = drivetrain_.carrier_speed_radps();
+}
+
+void VehicleBlocks::update_outputs() noexcept {
+  const auto& y = state_.framework_y;
+  const auto& z = state_.framework_z;
+  const Mat3 rot = body_to_road(y(3), y(4), y(5));
+  for (int i = 0; i < work_.wheel_count; ++i)
+    work_.wheels[static_cast<std::size_t>(i)].out = framework_.wheel_forces(rot, y, z, i);
+  const double tb = steering_.torsion_bar_torque_nm(state_.steering_y, state_.steering_z);
+  work_.torsion_bar_torque_nm = tb;
+  work_.assist_torque_nm = steering_.assist_torque_nm(tb);
+  work_.engine_torque_nm =
+      engine_torque_nm(p_.drivetrain, inputs_.throttle, drivetrain_.engine_speed_radps());
+}
+
+}  // namespace rig::model::vehicle

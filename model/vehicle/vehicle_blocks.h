@@ -1,0 +1,81 @@
+#pragma once
+/// @file
+/// The vehicle's blocks and their steppers, built once from the parameters (allocates) and wired
+/// to the one state, the step's inputs and the workspace; the sequential stepper runs them in the
+/// order of eq. (8): the tires' and half shafts' force elements, the drive train, the steering
+/// and the wheel spins, then the framework (chassis + hub travel) with the arrowhead
+/// factorization of eqs. (30-31). A unit without driven axles (a trailer) has no drive-train
+/// stages, one without steered axles no steering stage (their states stay at rest).
+
+#include <memory>
+#include <vector>
+
+#include "model/solver/arrowhead_factorization.h"
+#include "model/solver/force_element_stepper.h"
+#include "model/solver/mechanical_stepper.h"
+#include "model/solver/sequential_stepper.h"
+#include "model/tire/tmeasy_force_element.h"
+#include "model/vehicle/drivetrain.h"
+#include "model/vehicle/half_shafts.h"
+#include "model/vehicle/steering.h"
+#include "model/vehicle/suspension_kinematics.h"
+#include "model/vehicle/vehicle_framework.h"
+#include "model/vehicle/wheel_spin.h"
+
+namespace rig::model::vehicle {
+
+/// The driven wheels (front to rear) and how many there are.
+struct DrivenWheels {
+  std::array<int, kMaxWheels> wheel{};
+  int count = 0;
+};
+[[nodiscard]] DrivenWheels driven_wheels(const VehicleParams& p) noexcept;
+
+class VehicleBlocks {
+ public:
+  /// p, state, inputs and work must outlive the blocks (they belong to the VehicleModel).
+  VehicleBlocks(const VehicleParams& p, VehicleState& state, const VehicleInputs& inputs,
+                VehicleWorkspace& work);
+  VehicleBlocks(const VehicleBlocks&) = delete;
+  VehicleBlocks& operator=(const VehicleBlocks&) = delete;
+
+  /// The start of a step: eq. (29) at y_V(k), then every wheel's contact - vertical force,
+  /// rolling radius, the tire's characteristic at F_z and mu and f(s) (frozen over the step).
+  void update_contacts() noexcept;
+  /// The outputs of the current state: every wheel's forces, the torsion bar, assist and engine
+  /// torque (workspace).
+  void update_outputs() noexcept;
+
+  [[nodiscard]] solver::SequentialStepper& sequence() noexcept { return sequence_; }
+  [[nodiscard]] const solver::SequentialStepper& sequence() const noexcept { return sequence_; }
+  [[nodiscard]] VehicleFramework& framework() noexcept { return framework_; }
+  [[nodiscard]] const VehicleFramework& framework() const noexcept { return framework_; }
+  [[nodiscard]] Steering& steering() noexcept { return steering_; }
+  [[nodiscard]] const Drivetrain& drivetrain() const noexcept { return drivetrain_; }
+  /// The framework's stepper: M_VI and q of the step (for the force-coupled combination).
+  [[nodiscard]] const solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization>&
+  framework_stepper() const noexcept {
+    return framework_stepper_;
+  }
+
+ private:
+  const VehicleParams& p_;
+  VehicleState& state_;
+  const VehicleInputs& inputs_;
+  VehicleWorkspace& work_;
+  SuspensionKinematics kinematics_;
+  VehicleFramework framework_;
+  std::unique_ptr<HalfShafts> shafts_;  ///< none without driven wheels
+  Drivetrain drivetrain_;
+  Steering steering_;
+  WheelSpinStage wheel_stage_;
+  std::vector<std::unique_ptr<tire::TmeasyForceElement>> tires_;
+  std::vector<std::unique_ptr<solver::ForceElementStepper<2>>> tire_steppers_;
+  std::unique_ptr<solver::ForceElementStepper<Eigen::Dynamic>> shaft_stepper_;
+  solver::MechanicalStepper<2> drivetrain_stepper_;
+  solver::MechanicalStepper<2> steering_stepper_;
+  solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization> framework_stepper_;
+  solver::SequentialStepper sequence_;
+};
+
+}  // namespace rig::model::vehicle

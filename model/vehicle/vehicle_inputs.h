@@ -1,0 +1,25 @@
+#pragma once
+/// @file
+/// The driver's and the ECUs' commands for one step: read once from the signals before the step
+/// (vehicle_signals.h), constant while it runs.
+
+#include <array>
+
+#include "model/vehicle/vehicle_state.h"
+
+namespace rig::model::vehicle {
+
+struct VehicleInputs {
+  double throttle = 0;  ///< accelerator pedal [0..1]
+  /// Wheel brake pressure from the wheel's brake circuit (front or rear) [Pa].
+  std::array<double, kMaxWheels> brake_pressure_pa{};
+  double steering_angle_cmd_rad = 0;  ///< steering robot (angle mode)
+  double hand_torque_cmd_nm = 0;      ///< driver's hand torque (torque mode)
+  /// The assist input acts (SteeringParams::assist_from_input and the input valid); else the
+  /// built-in boost curve.
+  bool assist_from_input = false;
+  double assist_input_nm = 0;
+  int gear_request = 99;  ///< -1 reverse, 0 neutral, 1..n, 99 automatic
+};
+
+}  // namespace rig::model::vehicle

@@ -1,0 +1,113 @@
+#include "model/vehicle/vehicle_signals.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rig::model::vehicle {
+
+VehicleInputs read_inputs(const VehicleParams& params, const Signals& s) noexcept {
+  const auto in = [&](Signal id, double fallback) {
+    const double v = s[id];
+    return s.valid[index(id)] && std::isfinite(v) ? v : fallback;
+  };
+  VehicleInputs r;
+  r.throttle = std::clamp(in(Signal::kThrottlePedal, 0.0), 0.0, 1.0);
+  const double front = std::max(0.0, in(Signal::kBrakePressureFront, 0.0));
+  const double rear = std::max(0.0, in(Signal::kBrakePressureRear, 0.0));
+  for (std::size_t k = 0; k < 2 * params.axles.size(); ++k) {
+    r.brake_pressure_pa[k] = params.axles[k / 2].brake_circuit == 0 ? front : rear;
+  }
+  r.steering_angle_cmd_rad = in(Signal::kSteeringWheelAngleCmd, 0.0);
+  r.hand_torque_cmd_nm = in(Signal::kSteeringWheelTorqueCmd, 0.0);
+  // the assist input while valid when routed to it (SteeringParams::assist_from_input)
+  r.assist_from_input = params.steering.assist_from_input && s.valid[index(Signal::kAssistTorque)];
+  r.assist_input_nm = in(Signal::kAssistTorque, 0.0);
+  r.gear_request = static_cast<int>(std::lround(in(Signal::kGearRequest, 99.0)));
+  return r;
+}
+
+void write_outputs(const VehicleState& state, const VehicleInputs& in, const VehicleWorkspace& work,
+                   Signals& s) noexcept {
+  const auto& y = state.framework_y;
+  const auto& z = state.framework_z;
+  const int n = work.wheel_count;
+  const auto spin = [&](int i) { return state.spin_radps[static_cast<std::size_t>(i)]; };
+  const auto pressure = [&](int i) { return in.brake_pressure_pa[static_cast<std::size_t>(i)]; };
+  s.set(Signal::kVehicleSpeed, z(0));
+  s.set(Signal::kWheelSpeedFL, spin(0));
+  s.set(Signal::kWheelSpeedFR, spin(1));
+  s.set(Signal::kWheelSpeedRL, spin(n - 2));
+  s.set(Signal::kWheelSpeedRR, spin(n - 1));
+  s.set(Signal::kLongitudinalAccel, state.acceleration_mps2.x());
+  s.set(Signal::kLateralAccel, state.acceleration_mps2.y());
+  s.set(Signal::kYawRate, z(5));
+  s.set(Signal::kSteeringWheelAngle, state.steering_y(0));
+  s.set(Signal::kSteeringWheelSpeed, state.steering_z(0));
+  s.set(Signal::kTorsionBarTorque, work.torsion_bar_torque_nm);
+  s.set(Signal::kRackPosition, state.steering_y(1));
+  s.set(Signal::kRackForce, work.rack_force_n);
+  s.set(Signal::kEngineSpeed, state.drivetrain_z(0));
+  s.set(Signal::kGear, state.gear);
+  s.set(Signal::kBrakePressureFL, pressure(0));
+  s.set(Signal::kBrakePressureFR, pressure(1));
+  s.set(Signal::kBrakePressureRL, pressure(n - 2));
+  s.set(Signal::kBrakePressureRR, pressure(n - 1));
+  s.set(Signal::kPositionX, y(0));
+  s.set(Signal::kPositionY, y(1));
+  s.set(Signal::kHeading, y(3));
+}
+
+namespace {
+
+void fill_wheel(const VehicleState& state, const VehicleWorkspace& work, int i, WheelReport& r) {
+  const auto k = static_cast<std::size_t>(i);
+  const WheelWork& w = work.wheels[k];
+  r.spin_radps = state.spin_radps[k];
+  r.slip_x = w.out.slip_x;
+  r.slip_y = w.out.slip_y;
+  r.force_x_n = w.out.force_x_n;
+  r.force_y_n = w.out.force_y_n;
+  r.load_n = w.out.load_n;
+  r.deflection_x_m = state.tire_deflection_m[k](0);
+  r.deflection_y_m = state.tire_deflection_m[k](1);
+  r.hub_travel_m = state.framework_y(6 + i);
+  r.steer_angle_rad = w.steer_rad;
+  r.brake_torque_nm = w.brake_torque_nm;
+  r.drive_torque_nm = w.shaft_torque_nm;
+}
+
+}  // namespace
+
+void fill_report(const VehicleState& state, const VehicleInputs& in, const VehicleWorkspace& work,
+                 ModelReport& report) noexcept {
+  const auto& y = state.framework_y;
+  const auto& z = state.framework_z;
+  report.time_s = state.time_s;
+  report.unit_count = 1;
+  UnitReport& u = report.units[0];
+  for (int k = 0; k < 3; ++k) {
+    u.position_m[static_cast<std::size_t>(k)] = y(k);
+    u.velocity_mps[static_cast<std::size_t>(k)] = z(k);
+    u.angular_velocity_radps[static_cast<std::size_t>(k)] = z(3 + k);
+    u.acceleration_mps2[static_cast<std::size_t>(k)] = state.acceleration_mps2(k);
+  }
+  u.orientation_rad = {y(5), y(4), y(3)};
+  u.wheel_count = work.wheel_count;
+  for (int i = 0; i < work.wheel_count; ++i)
+    fill_wheel(state, work, i, u.wheels[static_cast<std::size_t>(i)]);
+  report.steering.wheel_angle_rad = state.steering_y(0);
+  report.steering.wheel_torque_nm = in.hand_torque_cmd_nm;
+  report.steering.torsion_bar_torque_nm = work.torsion_bar_torque_nm;
+  report.steering.rack_travel_m = state.steering_y(1);
+  report.steering.rack_force_n = work.rack_force_n;
+  report.steering.assist_torque_nm = work.assist_torque_nm;
+  report.drivetrain.engine_speed_radps = state.drivetrain_z(0);
+  report.drivetrain.engine_torque_nm = work.engine_torque_nm;
+  report.drivetrain.gear = state.gear;
+  const auto n = static_cast<std::size_t>(work.wheel_count);
+  report.brake_pressure_pa = {in.brake_pressure_pa[0], in.brake_pressure_pa[1],
+                              in.brake_pressure_pa[n - 2], in.brake_pressure_pa[n - 1]};
+  report.joint_count = 0;
+}
+
+}  // namespace rig::model::vehicle

@@ -1,0 +1,26 @@
+#pragma once
+/// @file
+/// The vehicle's adapter to model/signals.h and model/report.h: free functions that read the
+/// step's inputs from the signals and write the outputs and the report from the state and the
+/// workspace.
+
+#include "model/report.h"
+#include "model/signals.h"
+#include "model/vehicle/vehicle_inputs.h"
+#include "model/vehicle/vehicle_workspace.h"
+
+namespace rig::model::vehicle {
+
+/// The inputs of the next step; an invalid or non-finite input takes its neutral value (no
+/// throttle, no brake, straight ahead, automatic gearbox).
+[[nodiscard]] VehicleInputs read_inputs(const VehicleParams& params, const Signals& s) noexcept;
+
+/// The output signals of the current state.
+void write_outputs(const VehicleState& state, const VehicleInputs& in, const VehicleWorkspace& work,
+                   Signals& s) noexcept;
+
+/// The first unit of the report (and the steering, drive train and brake pressures).
+void fill_report(const VehicleState& state, const VehicleInputs& in, const VehicleWorkspace& work,
+                 ModelReport& report) noexcept;
+
+}  // namespace rig::model::vehicle

@@ -1,0 +1,57 @@
+#pragma once
+/// @file
+/// Everything of one vehicle that evolves from step to step, in one struct (as MuJoCo's mjData
+/// state part): the framework's coordinates and speeds (eq. 1), the subsystems' (eq. 2), the
+/// force elements' states (eq. 3), the gearbox's discrete state and the quasi-static memory that
+/// one step hands to the next. Saving, restoring, checking and resetting are one line each; the
+/// blocks of model/vehicle hold references into it and own no state of their own.
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "model/report.h"
+#include "model/vehicle/chassis_kinematics.h"
+#include "model/vehicle/vehicle_params.h"
+
+namespace rig::model::vehicle {
+
+inline constexpr int kMaxWheels = kMaxWheelsPerUnit;
+
+struct VehicleState {
+  double time_s = 0;
+  // ---- framework (eq. 1), sized 6 + wheel count ----
+  Eigen::VectorXd framework_y;  ///< x, y, z (CG, road frame), yaw, pitch, roll, hub travel s_i
+  Eigen::VectorXd framework_z;  ///< body velocity and angular velocity (body axes), s_i'
+  // ---- subsystems (eq. 2) ----
+  Eigen::Vector2d steering_y = Eigen::Vector2d::Zero();    ///< steering wheel angle, rack travel
+  Eigen::Vector2d steering_z = Eigen::Vector2d::Zero();    ///< their rates
+  Eigen::Vector2d drivetrain_y = Eigen::Vector2d::Zero();  ///< engine and carrier angle
+  Eigen::Vector2d drivetrain_z = Eigen::Vector2d::Zero();  ///< engine speed w_e, carrier w_c
+  std::array<double, kMaxWheels> spin_radps{};             ///< wheel spin rates
+  // ---- force elements (eq. 3) ----
+  std::array<Eigen::Vector2d, kMaxWheels> tire_deflection_m{};  ///< x_e, y_e (eqs. 22-24)
+  Eigen::VectorXd shaft_twist_rad;                              ///< one per driven wheel
+  // ---- discrete: the automatic gearbox ----
+  int gear = 0;
+  double last_shift_s = -1e9;
+  // ---- quasi-static memory of the last step ----
+  /// Rack travel at the wheel after the tie-rod compliance: where eq. (29) is evaluated next.
+  std::array<double, kMaxWheels> rack_at_wheel_m{};
+  /// Tire lateral force: its aligning torque loads the rack in the next step.
+  std::array<double, kMaxWheels> lateral_force_n{};
+  /// CG acceleration over the last step, body axes (from z(k+1) - z(k)).
+  Vec3 acceleration_mps2 = Vec3::Zero();
+};
+
+/// A state sized for the vehicle (allocates; construction time only).
+[[nodiscard]] VehicleState make_state(const VehicleParams& params, int driven_wheel_count);
+
+/// At rest at the design position at (x, y, yaw) with the engine idling, gear 0 (no allocation).
+void place_at_rest(VehicleState& s, const VehicleParams& params, double x_m, double y_m,
+                   double yaw_rad) noexcept;
+
+/// Every entry finite (the step's NaN/inf guard).
+[[nodiscard]] bool is_finite(const VehicleState& s) noexcept;
+
+}  // namespace rig::model::vehicle

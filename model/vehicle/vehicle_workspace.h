@@ -1,0 +1,74 @@
+#pragma once
+/// @file
+/// What one step derives and hands from block to block (the sequential order of eq. 8: force
+/// elements, subsystems, framework), apart from the state: the suspension pose of eq. (29) and
+/// the tire contacts at the start of the step, the subsystems' torques and forces within it, and
+/// the outputs at its end. Each field has one writer (named in its comment); the blocks read it.
+
+#include <array>
+#include <cmath>
+
+#include "model/tire/tmeasy_tire.h"
+#include "model/vehicle/vehicle_state.h"
+
+namespace rig::model::vehicle {
+
+/// What one wheel contributes at one framework state (the framework's wheel_forces()).
+struct WheelForces {
+  double load_n = 0;
+  double force_x_n = 0;
+  double force_y_n = 0;
+  double slip_x = 0;
+  double slip_y = 0;
+  double suspension_n = 0;  ///< pushes the wheel down (compression +)
+};
+
+struct WheelWork {
+  // ---- eq. (29) at y_V(k) (SuspensionKinematics::update) ----
+  double hub_travel_m = 0;         ///< z(k), where the pose was evaluated
+  double hub_x_m = 0;              ///< wheel-centre offset from the design position, body x
+  double hub_y_m = 0;              ///< body y
+  double hub_dx_ds = 0;            ///< dx/dz: the centre moves along (dx/dz, dy/dz, 1)
+  double hub_dy_ds = 0;            ///< dy/dz
+  double camber_rad = 0;           ///< alpha (rotation about body x)
+  double steer_kinematic_rad = 0;  ///< gamma(z(k), u(k))
+  double steer_d_du = 0;           ///< dgamma/du at (z(k), u(k))
+  double steer_at_rack_m = 0;      ///< u(k), where gamma was evaluated
+  // ---- orientation (kinematics, then the wheel-spin stage's tie rods): set_wheel_orientation
+  double steer_rad = 0;            ///< gamma: toe + steer from the rack
+  Vec3 spin_axis = Vec3::UnitY();  ///< Rz(steer) Rx(camber) e_y, body axes
+  // ---- the tire at the start of the step (VehicleModel's contacts) ----
+  double load_n = 0;         ///< F_z at y_V(k), z_V(k)
+  tire::TireContact tire{};  ///< characteristic at F_z and mu, kinematics, f
+  // ---- subsystems within the step (WheelSpinStage) ----
+  double tie_rod_force_n = 0;  ///< resisting rack force from this wheel's aligning torque
+  double shaft_torque_nm = 0;  ///< half-shaft torque on the wheel
+  double brake_torque_nm = 0;  ///< applied brake (+ rolling resistance) torque, signed
+  // ---- at the end of the step (VehicleModel::finish_step) ----
+  WheelForces out{};
+};
+
+/// Sets steer (gamma) and camber (alpha) of a wheel and its spin axis Rz(gamma) Rx(alpha) e_y,
+/// once per change, so that the contact kinematics need no trigonometry.
+inline void set_wheel_orientation(WheelWork& w, double steer_rad, double camber_rad) noexcept {
+  w.steer_rad = steer_rad;
+  w.camber_rad = camber_rad;
+  const double cos_camber = std::cos(camber_rad);
+  w.spin_axis = Vec3(-std::sin(steer_rad) * cos_camber, std::cos(steer_rad) * cos_camber,
+                     std::sin(camber_rad));
+}
+
+struct VehicleWorkspace {
+  int wheel_count = 0;
+  std::array<WheelWork, kMaxWheels> wheels{};
+  // drive train (gear selection; the wheel-spin stage for the carrier speed)
+  double total_ratio = 0;          ///< gear ratio x final drive (signed; 0 in neutral)
+  double carrier_speed_radps = 0;  ///< differential input speed in wheel units, newest
+  // steering (the wheel-spin stage for the rack force; finish_step for the rest)
+  double rack_force_n = 0;  ///< sum of the tie-rod forces on the rack
+  double torsion_bar_torque_nm = 0;
+  double assist_torque_nm = 0;  ///< applied (input or boost curve)
+  double engine_torque_nm = 0;
+};
+
+}  // namespace rig::model::vehicle
