@@ -2,7 +2,7 @@
 /// @file
 /// The parallel option of the coupled step (issue 7): begin_step of units 1..N-1 runs elsewhere
 /// while the caller runs unit 0. model/ owns no threads: the rig provides the runner
-/// (rig/vehicle_config/thread_begin_step_runner.h), with the loop thread's scheduling.
+/// (rig/thread_begin_step_runner.h), with the loop thread's scheduling.
 
 #include <functional>
 #include <memory>

@@ -104,20 +104,7 @@ solver::NewtonReport ChainStepper::step(double h) noexcept {
   for (;;) {
     evaluate();
     report.residual = g_.lpNorm<Eigen::Infinity>();
-    const bool position_ok = report.residual <= params_.position_tolerance;
-    if (report.iterations > 0) {
-      const bool multiplier_ok =
-          report.last_increment <=
-          params_.multiplier_rel_tolerance * lambda_.lpNorm<Eigen::Infinity>() +
-              params_.multiplier_abs_tolerance;
-      const bool done = params_.criterion == solver::NewtonCriterion::kPosition
-                            ? position_ok
-                            : position_ok && multiplier_ok;
-      if (done) {
-        report.converged = true;
-        break;
-      }
-    } else if (params_.criterion == solver::NewtonCriterion::kPosition && position_ok) {
+    if (solver::newton_converged(params_, report, lambda_)) {
       report.converged = true;
       break;
     }

@@ -1,25 +1,17 @@
 #include "model/combination/force_coupled.h"
-#include "model/combination/unit_reports.h"
 
-#include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 namespace rig::model::combination {
 
 ForceCoupledCombination::ForceCoupledCombination(const CombinationParams& params,
                                                  double step_size_s)
-    : p_(params), h_(step_size_s), units_(build_units(params, step_size_s)) {
-  std::vector<Eigen::Index> sizes;
-  for (const auto& u : units_) {
-    sizes.push_back(u->coordinate_size());
-    n_ += u->coordinate_size();
-  }
+    : CombinationShell(params, step_size_s) {
+  for (const auto& u : units_) n_ += u->coordinate_size();
   for (const JointParams& j : p_.joints) {
     if (j.kind == JointKind::kTowBar)
       throw std::invalid_argument("force-coupled baseline: the tow bar joint is not implemented");
   }
-  constraint_ = std::make_unique<ChainConstraint>(p_.joints, sizes);
   m_ = constraint_->size();
   stiffness_ = Eigen::VectorXd::Zero(m_);
   damping_ = Eigen::VectorXd::Zero(m_);
@@ -47,28 +39,20 @@ ForceCoupledCombination::ForceCoupledCombination(const CombinationParams& params
   reset(0, 0, 0);
 }
 
-void ForceCoupledCombination::reset(double x_m, double y_m, double yaw_rad) noexcept {
-  place_units(units_, p_.joints, x_m, y_m, yaw_rad);
+void ForceCoupledCombination::reset_coupling() noexcept {
   preload_.setZero();
   for (int i = 0; i < constraint_->joint_count(); ++i) {
     preload_(constraint_->row(i) + 2) =
         -units_[static_cast<std::size_t>(i) + 1]->framework().support_load_n();
   }
   force_ = preload_;
-  time_s_ = 0;
 }
 
-void ForceCoupledCombination::set_forward_speed(double speed_mps) noexcept {
-  for (auto& u : units_) u->set_forward_speed(speed_mps);
-}
-
-StepStatus ForceCoupledCombination::step(Signals& signals) noexcept {
-  const double h = h_;
+bool ForceCoupledCombination::couple(double h) noexcept {
   m_big_.setZero();
   k_inv_.setZero();
   for (std::size_t j = 0; j < units_.size(); ++j) {
     vehicle::VehicleModel& u = *units_[j];
-    u.set_inputs(signals);
     u.begin_step(h);  // eq. (8) up to M_VI and q of each unit
     const Eigen::Index o = constraint_->offset(static_cast<int>(j));
     const Eigen::Index n = u.coordinate_size();
@@ -94,45 +78,14 @@ StepStatus ForceCoupledCombination::step(Signals& signals) noexcept {
   dz_ = lu_.solve(q_);
   // the implicit spring force at t + h (linearized): F - (h D + h^2 C) J dz
   force_.noalias() -= jw_ * dz_;
-  bool ok = dz_.allFinite();
   for (std::size_t j = 0; j < units_.size(); ++j) {
     vehicle::VehicleModel& u = *units_[j];
     const Eigen::Index o = constraint_->offset(static_cast<int>(j));
     const Eigen::Index n = u.coordinate_size();
     extra_.segment(o, n) = dz_.segment(o, n) - u.unconstrained_rate();
     u.finish_step(h, extra_.segment(o, n));  // z(k+1) = z(k) + h dz
-    ok = ok && u.last_status() == StepStatus::kOk;
   }
-  if (!ok) {
-    for (auto& u : units_) u->revert_step();
-    return StepStatus::kNonFinite;
-  }
-  time_s_ += h;
-  units_[0]->write_outputs(signals);
-  return StepStatus::kOk;
-}
-
-double ForceCoupledCombination::joint_violation_m(int i) const noexcept {
-  const auto k = static_cast<std::size_t>(i);
-  return combination::joint_violation_m(constraint_->joint(i), *units_[k], *units_[k + 1]);
-}
-
-double ForceCoupledCombination::articulation_rad(int i) const noexcept {
-  const auto k = static_cast<std::size_t>(i);
-  return combination::articulation_rad(*units_[k], *units_[k + 1]);
-}
-
-void ForceCoupledCombination::fill_report(ModelReport& report) const noexcept {
-  fill_unit_reports(units_, report);
-  report.time_s = time_s_;
-  report.joint_count = std::min(constraint_->joint_count(), kMaxJoints);
-  for (int i = 0; i < report.joint_count; ++i) {
-    JointReport& j = report.joints[static_cast<std::size_t>(i)];
-    const Vec3 f = joint_force_n(i);
-    j.force_n = {f.x(), f.y(), f.z()};
-    j.violation_m = joint_violation_m(i);
-    j.newton_iterations = 0;
-  }
+  return dz_.allFinite();
 }
 
 }  // namespace rig::model::combination

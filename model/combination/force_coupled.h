@@ -16,38 +16,23 @@
 
 #include <Eigen/LU>
 
-#include "model/combination/combination.h"
+#include "model/combination/combination_shell.h"
 
 namespace rig::model::combination {
 
-class ForceCoupledCombination final : public SteppedModel {
+class ForceCoupledCombination final : public CombinationShell {
  public:
   ForceCoupledCombination(const CombinationParams& params, double step_size_s);
 
-  [[nodiscard]] double step_size_s() const noexcept override { return h_; }
-  [[nodiscard]] double time_s() const noexcept override { return time_s_; }
-  StepStatus step(Signals& signals) noexcept override;
-  void fill_report(ModelReport& report) const noexcept override;
-
-  void reset(double x_m, double y_m, double yaw_rad) noexcept;
-  void set_forward_speed(double speed_mps) noexcept;
-  [[nodiscard]] vehicle::VehicleModel& unit(int i) noexcept {
-    return *units_[static_cast<std::size_t>(i)];
-  }
   /// Spring-damper force of joint i on its leading unit at the end of the last step [N].
-  [[nodiscard]] Vec3 joint_force_n(int i) const noexcept {
+  [[nodiscard]] Vec3 joint_force_n(int i) const noexcept override {
     return force_.segment<3>(constraint_->row(i));
   }
-  /// |g|_inf of joint i at the current coordinates (the spring's deflection) [m].
-  [[nodiscard]] double joint_violation_m(int i) const noexcept;
-  [[nodiscard]] double articulation_rad(int i) const noexcept;
 
  private:
-  CombinationParams p_;
-  double h_;
-  double time_s_ = 0;
-  std::vector<std::unique_ptr<vehicle::VehicleModel>> units_;
-  std::unique_ptr<ChainConstraint> constraint_;
+  bool couple(double h) noexcept override;
+  void reset_coupling() noexcept override;
+
   Eigen::Index n_ = 0, m_ = 0;
   Eigen::VectorXd stiffness_, damping_;  // C, D (diagonal, per constraint row)
   Eigen::VectorXd preload_;              // F_0

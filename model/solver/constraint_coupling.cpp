@@ -23,20 +23,8 @@ NewtonReport ConstraintNewton::solve(const Eigen::Ref<const Eigen::VectorXd>& y_
     y_.noalias() += w * lambda;
     constraint_.evaluate(y_, g_, dg_dy_);
     report.residual = g_.lpNorm<Eigen::Infinity>();
-    const bool position_ok = report.residual <= params_.position_tolerance;
-    if (report.iterations > 0) {
-      const bool multiplier_ok = report.last_increment <= params_.multiplier_rel_tolerance *
-                                                                  lambda.lpNorm<Eigen::Infinity>() +
-                                                              params_.multiplier_abs_tolerance;
-      const bool done = params_.criterion == NewtonCriterion::kPosition
-                            ? position_ok
-                            : position_ok && multiplier_ok;
-      if (done) {
-        report.converged = true;
-        return report;
-      }
-    } else if (params_.criterion == NewtonCriterion::kPosition && position_ok) {
-      report.converged = true;  // the warm start already satisfies the position tolerance
+    if (newton_converged(params_, report, lambda)) {
+      report.converged = true;
       return report;
     }
     if (report.iterations >= params_.max_iterations) return report;

@@ -65,6 +65,22 @@ struct NewtonReport {
   bool converged = false;     ///< false: the cap was reached
 };
 
+/// The one stopping rule of the Newton loops on lambda (ConstraintNewton here, the combinations'
+/// ChainStepper): with `report` holding |g| of the current iterate and, after the first
+/// iteration, the last increment, the iterate is accepted under the params' criterion (see the
+/// file comment). The warm start (no iteration yet) is accepted on |g| only under kPosition: its
+/// lambda has not been checked by an increment.
+template <typename Lambda>
+[[nodiscard]] bool newton_converged(const NewtonParams& params, const NewtonReport& report,
+                                    const Eigen::MatrixBase<Lambda>& lambda) noexcept {
+  const bool position_ok = report.residual <= params.position_tolerance;
+  if (params.criterion == NewtonCriterion::kPosition) return position_ok;
+  if (report.iterations == 0) return false;
+  return position_ok && report.last_increment <= params.multiplier_rel_tolerance *
+                                                         lambda.template lpNorm<Eigen::Infinity>() +
+                                                     params.multiplier_abs_tolerance;
+}
+
 /// Newton on lambda (eqs. 47-50) for given Y_u and W. Sized in the constructor; solve() never
 /// allocates.
 class ConstraintNewton {
