@@ -84,22 +84,41 @@ struct SteadyStateForces {
 
 // ---- stage 3: eqs. (22-26) ----
 
-/// Eq. (24) in one direction, (d r_D|w| s + f) x_e' = -f v_slip - c x_e r_D|w| s, and its
-/// derivative by the deflection. At stand-still (v_slip = 0, w = 0) x_e' = 0: an existing
-/// deflection, and so an existing force, is held; locked (w = 0) x_e' = -v_slip (eq. 25).
+/// Eq. (24) in one direction, (d r_D|w| s + f) x_e' = -f v_slip - c x_e r_D|w| s, its
+/// derivative by the deflection, and the stiff damping path of the force F = c x_e + d x_e' at
+/// frozen f, dF/dv_slip = -d f / (d r_D|w| s + f) (method.md sec. 6: the partial M_VI needs).
+/// At stand-still (v_slip = 0, w = 0) x_e' = 0: an existing deflection, and so an existing
+/// force, is held; locked (w = 0) x_e' = -v_slip (eq. 25).
 /// @param slip_speed_mps v_x - r_D w (laterally v_y); @param rolling_mps r_D |w|.
-struct DirectionalRate {
+struct DirectionalDynamics {
   double rate = 0;                 ///< x_e' [m/s]
   double d_rate_d_deflection = 0;  ///< dx_e'/dx_e [1/s]
+  double damping_nspm = 0;         ///< -dF/dv_slip [N s/m]
 };
-[[nodiscard]] inline DirectionalRate directional_rate(double deflection_m, double slip_speed_mps,
-                                                      double rolling_mps, double normalize,
-                                                      double f_per_slip, double stiffness_npm,
-                                                      double damping_nspm) noexcept {
+[[nodiscard]] inline DirectionalDynamics directional_dynamics(
+    double deflection_m, double slip_speed_mps, double rolling_mps, double normalize,
+    double f_per_slip, double stiffness_npm, double damping_nspm) noexcept {
   const double rs = rolling_mps * normalize;
   const double denom = damping_nspm * rs + f_per_slip + 1e-9;
   return {(-f_per_slip * slip_speed_mps - stiffness_npm * deflection_m * rs) / denom,
-          -stiffness_npm * rs / denom};
+          -stiffness_npm * rs / denom, damping_nspm * f_per_slip / denom};
+}
+
+/// directional_dynamics() of both directions at deflection s = (x_e, y_e), with f given.
+struct DeflectionDynamics {
+  DirectionalDynamics x{}, y{};
+};
+[[nodiscard]] inline DeflectionDynamics deflection_dynamics(const TmeasyParams& p,
+                                                            const TireCharacteristic& c,
+                                                            const TireKinematics& k,
+                                                            double f_per_slip,
+                                                            const Eigen::Vector2d& s) noexcept {
+  const double rolling = k.rolling_radius_m * std::abs(k.spin_radps);
+  return {directional_dynamics(s(0), k.long_speed_mps - k.rolling_radius_m * k.spin_radps, rolling,
+                               c.normalize_x, f_per_slip, p.longitudinal_stiffness_npm,
+                               p.longitudinal_damping_nspm),
+          directional_dynamics(s(1), k.lat_speed_mps, rolling, c.normalize_y, f_per_slip,
+                               p.lateral_stiffness_npm, p.lateral_damping_nspm)};
 }
 
 /// x_e', y_e' and their diagonal derivative at deflection s = (x_e, y_e), with f given.
@@ -111,16 +130,10 @@ struct DeflectionRates {
                                                       const TireCharacteristic& c,
                                                       const TireKinematics& k, double f_per_slip,
                                                       const Eigen::Vector2d& s) noexcept {
-  const double rolling = k.rolling_radius_m * std::abs(k.spin_radps);
-  const DirectionalRate x = directional_rate(
-      s(0), k.long_speed_mps - k.rolling_radius_m * k.spin_radps, rolling, c.normalize_x,
-      f_per_slip, p.longitudinal_stiffness_npm, p.longitudinal_damping_nspm);
-  const DirectionalRate y =
-      directional_rate(s(1), k.lat_speed_mps, rolling, c.normalize_y, f_per_slip,
-                       p.lateral_stiffness_npm, p.lateral_damping_nspm);
+  const DeflectionDynamics d = deflection_dynamics(p, c, k, f_per_slip, s);
   DeflectionRates r;
-  r.rate << x.rate, y.rate;
-  r.d_rate_d_deflection << x.d_rate_d_deflection, y.d_rate_d_deflection;
+  r.rate << d.x.rate, d.y.rate;
+  r.d_rate_d_deflection << d.x.d_rate_d_deflection, d.y.d_rate_d_deflection;
   return r;
 }
 
@@ -182,10 +195,8 @@ struct DampingPaths {
 [[nodiscard]] inline DampingPaths damping_paths(const TmeasyParams& p, const TireCharacteristic& c,
                                                 const TireKinematics& k,
                                                 double f_per_slip) noexcept {
-  const double rolling = k.rolling_radius_m * std::abs(k.spin_radps);
-  const double dx = p.longitudinal_damping_nspm, dy = p.lateral_damping_nspm;
-  return {dx * f_per_slip / (dx * rolling * c.normalize_x + f_per_slip + 1e-9),
-          dy * f_per_slip / (dy * rolling * c.normalize_y + f_per_slip + 1e-9)};
+  const DeflectionDynamics d = deflection_dynamics(p, c, k, f_per_slip, Eigen::Vector2d::Zero());
+  return {d.x.damping_nspm, d.y.damping_nspm};
 }
 
 /// The longitudinal force on the wheel's spin equation and its stiff derivative dF_x/dw (the
@@ -198,12 +209,12 @@ struct SpinForce {
                                           const TireKinematics& k, double f_per_slip,
                                           double long_deflection_m) noexcept {
   const double r = k.rolling_radius_m;
-  const double rolling = r * std::abs(k.spin_radps);
-  const double cx = p.longitudinal_stiffness_npm, dx = p.longitudinal_damping_nspm;
-  const DirectionalRate x = directional_rate(long_deflection_m, k.long_speed_mps - r * k.spin_radps,
-                                             rolling, c.normalize_x, f_per_slip, cx, dx);
-  const double denom = dx * rolling * c.normalize_x + f_per_slip + 1e-9;
-  return {cx * long_deflection_m + dx * x.rate, dx * f_per_slip * r / denom};
+  const DirectionalDynamics x = directional_dynamics(
+      long_deflection_m, k.long_speed_mps - r * k.spin_radps, r * std::abs(k.spin_radps),
+      c.normalize_x, f_per_slip, p.longitudinal_stiffness_npm, p.longitudinal_damping_nspm);
+  // dF_x/dw = -r_D dF_x/dv_slip: the spin moves the slip speed v_x - r_D w
+  return {p.longitudinal_stiffness_npm * long_deflection_m + p.longitudinal_damping_nspm * x.rate,
+          x.damping_nspm * r};
 }
 
 /// The rolling resistance torque f_r r_D F_z, a dry-friction torque on the wheel's spin (it
