@@ -167,13 +167,13 @@ struct TireForces {
   double lat_force_n = 0;
   bool limited = false;  ///< eq. (26) active (or no capacity)
 };
-[[nodiscard]] inline TireForces tire_forces(const TmeasyParams& p, const TireCharacteristic& c,
-                                            const TireKinematics& k, double f_per_slip,
-                                            const Eigen::Vector2d& s) noexcept {
-  const DeflectionRates r = deflection_rates(p, c, k, f_per_slip, s);
+/// The same from the deflection dynamics d of state s.
+[[nodiscard]] inline TireForces limited_forces(const TmeasyParams& p, const TireCharacteristic& c,
+                                               const Eigen::Vector2d& s,
+                                               const DeflectionDynamics& d) noexcept {
   TireForces out;
-  out.long_force_n = p.longitudinal_stiffness_npm * s(0) + p.longitudinal_damping_nspm * r.rate(0);
-  out.lat_force_n = p.lateral_stiffness_npm * s(1) + p.lateral_damping_nspm * r.rate(1);
+  out.long_force_n = p.longitudinal_stiffness_npm * s(0) + p.longitudinal_damping_nspm * d.x.rate;
+  out.lat_force_n = p.lateral_stiffness_npm * s(1) + p.lateral_damping_nspm * d.y.rate;
   const double rho = ellipse_ratio(c, out.long_force_n, out.lat_force_n);
   if (rho == std::numeric_limits<double>::infinity()) {
     out = {0.0, 0.0, true};
@@ -183,6 +183,11 @@ struct TireForces {
     out.limited = true;
   }
   return out;
+}
+[[nodiscard]] inline TireForces tire_forces(const TmeasyParams& p, const TireCharacteristic& c,
+                                            const TireKinematics& k, double f_per_slip,
+                                            const Eigen::Vector2d& s) noexcept {
+  return limited_forces(p, c, s, deflection_dynamics(p, c, k, f_per_slip, s));
 }
 
 /// The stiff damping paths of eq. (24) at frozen f, the partials M_VI needs (method.md sec. 6):
@@ -199,22 +204,19 @@ struct DampingPaths {
   return {d.x.damping_nspm, d.y.damping_nspm};
 }
 
-/// The longitudinal force on the wheel's spin equation and its stiff derivative dF_x/dw (the
-/// damping path at frozen f), for the wheel-spin stage's implicit inertia.
+/// The longitudinal force on the wheel's spin equation - the same limited force the framework
+/// applies to the wheel's contact (eq. 26) - and its stiff derivative dF_x/dw (the damping path at
+/// frozen f, not scaled by the limiter), for the wheel-spin stage's implicit inertia.
 struct SpinForce {
   double long_force_n = 0;
   double d_force_d_spin = 0;  ///< [N s]
 };
 [[nodiscard]] inline SpinForce spin_force(const TmeasyParams& p, const TireCharacteristic& c,
                                           const TireKinematics& k, double f_per_slip,
-                                          double long_deflection_m) noexcept {
-  const double r = k.rolling_radius_m;
-  const DirectionalDynamics x = directional_dynamics(
-      long_deflection_m, k.long_speed_mps - r * k.spin_radps, r * std::abs(k.spin_radps),
-      c.normalize_x, f_per_slip, p.longitudinal_stiffness_npm, p.longitudinal_damping_nspm);
+                                          const Eigen::Vector2d& s) noexcept {
+  const DeflectionDynamics d = deflection_dynamics(p, c, k, f_per_slip, s);
   // dF_x/dw = -r_D dF_x/dv_slip: the spin moves the slip speed v_x - r_D w
-  return {p.longitudinal_stiffness_npm * long_deflection_m + p.longitudinal_damping_nspm * x.rate,
-          x.damping_nspm * r};
+  return {limited_forces(p, c, s, d).long_force_n, d.x.damping_nspm * k.rolling_radius_m};
 }
 
 /// The rolling resistance torque f_r r_D F_z, a dry-friction torque on the wheel's spin (it
