@@ -14,23 +14,9 @@ QuarterCarInputs paper_maneuver_inputs(double t_s) noexcept {
   return in;
 }
 
-// ---- force element: eq. (24) ----
-void TireDeflectionElement::rate(const Vector& s, Vector& f) const noexcept {
-  f(0) = tire_.evaluate(s(0), body_speeds_(0), body_speeds_(1)).deflection_rate_mps;
-}
-
-bool TireDeflectionElement::rate_jacobian(const Vector& s, Matrix& df_ds) const noexcept {
-  df_ds(0, 0) = tire_.evaluate(s(0), body_speeds_(0), body_speeds_(1)).d_rate_d_deflection;
-  return true;
-}
-
-void TireDeflectionElement::after_update(Vector& s) noexcept {
-  s(0) = tire_.limit_deflection(s(0));  // eq. (26)
-}
-
 // ---- framework: eq. (9) on the grade ----
 QuarterCarBody::QuarterCarBody(const QuarterCarParams& params, const QuarterCarTire& tire,
-                               Vector& y, Vector& z, const Eigen::Matrix<double, 1, 1>& deflection)
+                               Vector& y, Vector& z, const Eigen::Vector2d& deflection)
     : params_(params), tire_(tire), y_(y), z_(z), deflection_(deflection) {}
 
 void QuarterCarBody::mass_matrix(const Vector&, Matrix& m) const noexcept {
@@ -41,7 +27,7 @@ void QuarterCarBody::applied_forces(const Vector&, const Vector& z, Vector& q) c
   const double sin_alpha = params_.grade / std::sqrt(1.0 + params_.grade * params_.grade);
   const TireLongitudinalState st = tire_.evaluate(deflection_(0), z(0), z(1));
   q(0) = st.force_n - params_.mass_kg * params_.gravity_mps2 * sin_alpha;  // eq. (9) + grade
-  q(1) = drive_torque_nm_ - params_.wheel_radius_m * st.force_n + st.rolling_torque_nm;
+  q(1) = drive_torque_nm_ - params_.wheel_radius_m * st.force_n;
 }
 
 bool QuarterCarBody::force_jacobians(const Vector&, const Vector& z, Matrix& dq_dy,
@@ -52,7 +38,7 @@ bool QuarterCarBody::force_jacobians(const Vector&, const Vector& z, Matrix& dq_
   const double dfx_dw = st.d_force_d_spin;
   const double r = params_.wheel_radius_m;
   dq_dy.setZero();
-  dq_dz << dfx_dv, dfx_dw, -r * dfx_dv, -r * dfx_dw + st.d_rolling_torque_d_spin;
+  dq_dz << dfx_dv, dfx_dw, -r * dfx_dv, -r * dfx_dw;
   return true;
 }
 
@@ -62,7 +48,7 @@ QuarterCar::QuarterCar(const QuarterCarParams& params)
       tire_(params.tire,
             params.mass_kg * params.gravity_mps2 / std::sqrt(1.0 + params.grade * params.grade),
             params.wheel_radius_m),
-      tire_element_(tire_, deflection_, z_),
+      tire_element_(tire_.params(), contact_, deflection_),
       body_(params_, tire_, y_, z_, deflection_),
       tire_stepper_(tire_element_),
       body_stepper_(body_) {}
@@ -75,7 +61,7 @@ void QuarterCar::set_state(const State& state) noexcept {
   time_s_ = state.time_s;
   y_ << state.position_m, state.wheel_angle_rad;
   z_ << state.speed_mps, state.spin_radps;
-  deflection_(0) = state.deflection_m;
+  deflection_ << state.deflection_m, 0.0;
 }
 
 double QuarterCar::tire_force_n() const noexcept {
@@ -86,7 +72,9 @@ void QuarterCar::step(double h, const QuarterCarInputs& inputs) noexcept {
   const double v_old = z_(0);
   drive_torque_nm_ = inputs.drive_torque_nm;
   body_.set_drive_torque_nm(inputs.drive_torque_nm);
-  // eq. (8): force element first, then the framework with the new deflection
+  // eq. (8): force element first (at the contact of the step's start), then the framework with
+  // the new deflection
+  contact_ = tire_.contact(z_(0), z_(1));
   tire_stepper_.advance(h);
   body_stepper_.begin_step(h);
   // Dry-friction brake, implicit (method.md sec. 6): the brake torque T acts on the wheel as the

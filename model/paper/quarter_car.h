@@ -1,8 +1,9 @@
 #pragma once
 /// @file
 /// The paper's quarter car (eq. 9) with first-order tire dynamics (eq. 24) on a grade, stepped by
-/// the modified implicit Euler engine:
-///   force element:  s = x_e (tire deflection), eq. (24) with the limiter of eq. (26);
+/// the modified implicit Euler:
+///   force element:  s = (x_e, y_e) (tire deflection; y_e stays 0), model/tire's TMeasy force
+///                   element: eq. (24) with the limiter of eq. (26);
 ///   framework:      y = [x, phi], z = [v, omega],  m v' = F_x - m g sin(alpha),
 ///                   Theta omega' = T_drive - T_brake - r F_x,
 ///   with F_x = c_x x_e + d_x x_e'(x_e, v, omega) (eq. 22), whose partial derivatives with
@@ -15,37 +16,19 @@
 
 #include "model/paper/quarter_car_params.h"
 #include "model/paper/quarter_car_tire.h"
-#include "model/solver/force_element.h"
 #include "model/solver/force_element_stepper.h"
 #include "model/solver/mechanical_block.h"
 #include "model/solver/mechanical_stepper.h"
+#include "model/tire/tmeasy_force_element.h"
 
 namespace rig::model::paper {
-
-/// The tire deflection x_e as a force element (eq. 24); reads the wheel body's speeds.
-class TireDeflectionElement final : public solver::ForceElement<1> {
- public:
-  /// s: the deflection state (owned by the caller); body_speeds: [v, omega] of the framework.
-  TireDeflectionElement(const QuarterCarTire& tire, Vector& s, const Eigen::Vector2d& body_speeds)
-      : tire_(tire), s_(s), body_speeds_(body_speeds) {}
-  [[nodiscard]] Eigen::Index state_size() const noexcept override { return 1; }
-  [[nodiscard]] Vector& state() noexcept override { return s_; }
-  void rate(const Vector& s, Vector& f) const noexcept override;
-  bool rate_jacobian(const Vector& s, Matrix& df_ds) const noexcept override;
-  void after_update(Vector& s) noexcept override;
-
- private:
-  const QuarterCarTire& tire_;
-  Vector& s_;
-  const Eigen::Vector2d& body_speeds_;
-};
 
 /// Vehicle + wheel on the grade: y = [x, phi], z = [v, omega] (K = I).
 class QuarterCarBody final : public solver::MechanicalBlock<2> {
  public:
   /// y, z: the framework states (owned by the caller); deflection: the tire's x_e.
   QuarterCarBody(const QuarterCarParams& params, const QuarterCarTire& tire, Vector& y, Vector& z,
-                 const Eigen::Matrix<double, 1, 1>& deflection);
+                 const Eigen::Vector2d& deflection);
   [[nodiscard]] Eigen::Index size() const noexcept override { return 2; }
   [[nodiscard]] Vector& coordinates() noexcept override { return y_; }
   [[nodiscard]] Vector& speeds() noexcept override { return z_; }
@@ -61,7 +44,7 @@ class QuarterCarBody final : public solver::MechanicalBlock<2> {
   const QuarterCarTire& tire_;
   Vector& y_;
   Vector& z_;
-  const Eigen::Matrix<double, 1, 1>& deflection_;
+  const Eigen::Vector2d& deflection_;
   double drive_torque_nm_ = 0;
 };
 
@@ -105,12 +88,13 @@ class QuarterCar {
  private:
   QuarterCarParams params_;
   QuarterCarTire tire_;
-  Eigen::Matrix<double, 1, 1> deflection_ = Eigen::Matrix<double, 1, 1>::Zero();  ///< x_e
-  Eigen::Vector2d y_ = Eigen::Vector2d::Zero();                                   ///< [x, phi]
-  Eigen::Vector2d z_ = Eigen::Vector2d::Zero();                                   ///< [v, omega]
-  TireDeflectionElement tire_element_;
+  Eigen::Vector2d deflection_ = Eigen::Vector2d::Zero();  ///< x_e, y_e
+  Eigen::Vector2d y_ = Eigen::Vector2d::Zero();           ///< [x, phi]
+  Eigen::Vector2d z_ = Eigen::Vector2d::Zero();           ///< [v, omega]
+  tire::TireContact contact_{};                           ///< of the step's start
+  tire::TmeasyForceElement tire_element_;
   QuarterCarBody body_;
-  solver::ForceElementStepper<1> tire_stepper_;
+  solver::ForceElementStepper<2> tire_stepper_;
   solver::MechanicalStepper<2> body_stepper_;
   Eigen::Vector2d brake_direction_ = Eigen::Vector2d(0.0, -1.0);  ///< generalized brake force
   Eigen::Vector2d brake_response_ = Eigen::Vector2d::Zero();

@@ -4,43 +4,35 @@ namespace rig::model::paper {
 
 QuarterCarTire::QuarterCarTire(const tire::TmeasyParams& params, double wheel_load_n,
                                double radius_m)
-    : tire_(params), wheel_load_n_(wheel_load_n), radius_m_(radius_m) {}
+    : params_(params),
+      wheel_load_n_(wheel_load_n),
+      radius_m_(radius_m),
+      characteristic_(tire::characteristic_at(params, wheel_load_n, 1.0)) {}
 
-double QuarterCarTire::max_force_n() const noexcept {
-  return tire_.max_long_force_n(wheel_load_n_, 1.0);
+tire::TireContact QuarterCarTire::contact(double speed_mps, double spin_radps) const noexcept {
+  tire::TireContact c;
+  c.characteristic = characteristic_;
+  c.kinematics = {speed_mps, 0.0, spin_radps, radius_m_};
+  c.f_per_slip =
+      tire::slip_of(characteristic_, c.kinematics, params_.velocity_floor_mps).f_per_slip;
+  return c;
 }
 
 TireLongitudinalState QuarterCarTire::evaluate(double x_e, double v, double w) const noexcept {
-  if (cache_valid_ && x_e == cached_x_e_ && v == cached_v_ && w == cached_w_) return cached_;
-  tire::legacy::TireInput in;
-  in.long_speed_mps = v;
-  in.spin_radps = w;
-  in.rolling_radius_m = radius_m_;
-  in.load_n = wheel_load_n_;
-  in.friction = 1.0;
-  tire::legacy::TireOutput out;
-  tire_.evaluate(in, tire::legacy::TireDeflection{x_e, 0.0}, out);
+  const tire::TireContact c = contact(v, w);
+  const Eigen::Vector2d s(x_e, 0.0);
+  const tire::DeflectionDynamics d =
+      tire::deflection_dynamics(params_, characteristic_, c.kinematics, c.f_per_slip, s);
+  const tire::TireForces f = tire::limited_forces(params_, characteristic_, s, d);
   TireLongitudinalState st;
-  st.deflection_rate_mps = out.deflection_rate(0);
-  st.force_n = out.long_force_n;
-  st.limited = out.long_limited;
-  st.d_rate_d_deflection = out.d_rate_d_deflection(0);
-  st.d_force_d_speed = out.d_force(0, tire::legacy::kByLongSpeed);
-  st.d_force_d_spin = out.d_force(0, tire::legacy::kBySpin);
-  st.rolling_torque_nm = out.rolling_torque_nm;
-  st.d_rolling_torque_d_spin = out.d_rolling_torque_d_spin;
-  cached_x_e_ = x_e;
-  cached_v_ = v;
-  cached_w_ = w;
-  cached_ = st;
-  cache_valid_ = true;
+  st.force_n = f.long_force_n;
+  st.limited = f.limited;
+  // the whole force linearized (the paper's large steps need the slope of f(s) too)
+  const tire::TireForcePartials partials =
+      tire::tire_force_partials(params_, characteristic_, c.kinematics, s);
+  st.d_force_d_speed = partials.d_force(0, 0);
+  st.d_force_d_spin = partials.d_force(0, 2);
   return st;
-}
-
-double QuarterCarTire::limit_deflection(double x_e) const noexcept {
-  tire::legacy::TireDeflection d{x_e, 0.0};
-  tire_.clamp_deflection(wheel_load_n_, 1.0, d);
-  return d.long_m;
 }
 
 }  // namespace rig::model::paper

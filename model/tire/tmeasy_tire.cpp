@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/tire/dual.h"
 #include "model/tire/tmeasy_characteristic.h"
+#include "model/tire/tmeasy_characteristic_impl.h"
 
 namespace rig::model::tire {
 namespace {
@@ -19,7 +21,81 @@ TmeasyCurve guarded(TmeasyCurve c) noexcept {
   return c;
 }
 
+/// Pneumatic trail over contact length, (n/L)(s_y), Rill 2011 eq. 3.92 form: falls from
+/// (n/L)_0 through zero at s_y0 to a negative dip and back to zero at s_yE.
+double trail_over_length(double n0, double sy0, double syE, double sy) noexcept {
+  const double a = std::abs(sy);
+  if (a <= sy0) {
+    const double w = sy0 / syE;
+    const double x = a / sy0;
+    return n0 * ((1.0 - w) * (1.0 - x) + w * (1.0 - (3.0 - 2.0 * x) * x * x));
+  }
+  if (a <= syE) {
+    const double w = sy0 / syE;
+    const double e = (syE - a) / (syE - sy0);
+    return -n0 * (1.0 - w) * (a - sy0) / sy0 * e * e;
+  }
+  return 0.0;
+}
+
+using D3 = internal::Dual<3>;  // derivative slots: v_x, v_y, omega
+
+/// f(s) of eq. (16) in dual numbers (f_per_slip_of's formula).
+D3 f_per_slip_dual(const TireCharacteristic& c, const D3& slip_x, const D3& slip_y) noexcept {
+  const D3 s = internal::sqrt(slip_x * slip_x + slip_y * slip_y);
+  D3 cos_phi(1.0), sin_phi(0.0);
+  if (s.v > 1e-12) {
+    cos_phi = slip_x / s;
+    sin_phi = slip_y / s;
+  }
+  const auto constant = [](const TmeasyCurve& k) {
+    return internal::CurveT<D3>{k.initial_slope_n, k.max_force_n, k.max_slip, k.slide_force_n,
+                                k.slide_slip};
+  };
+  const internal::CurveT<D3> k = internal::generalized_curve_t(
+      constant(c.x), constant(c.y), internal::NormT<D3>{c.normalize_x, c.normalize_y}, cos_phi,
+      sin_phi);
+  if (k.max_force_n.v <= 0.0 || k.initial_slope_n.v <= 0.0) return D3(0.0);
+  return internal::f_of_s_t(k, s);
+}
+
 }  // namespace
+
+TireForcePartials tire_force_partials(const TmeasyParams& p, const TireCharacteristic& c,
+                                      const TireKinematics& k, const Eigen::Vector2d& s) noexcept {
+  const D3 vx = D3::variable(k.long_speed_mps, 0);
+  const D3 vy = D3::variable(k.lat_speed_mps, 1);
+  const D3 w = D3::variable(k.spin_radps, 2);
+  const double r = k.rolling_radius_m;
+  const D3 rolling = r * internal::abs(w);
+  const D3 slip_speed_x = vx - r * w;
+  // eqs. (14-17), (24), (22) as in slip_of, directional_dynamics and limited_forces
+  const D3 f = f_per_slip_dual(c, -slip_speed_x / (rolling * c.normalize_x + p.velocity_floor_mps),
+                               -vy / (rolling * c.normalize_y + p.velocity_floor_mps));
+  const auto force = [&](const D3& slip_speed, double normalize, double deflection,
+                         double stiffness, double damping) {
+    const D3 rs = rolling * normalize;
+    const D3 rate = (-f * slip_speed - stiffness * deflection * rs) / (damping * rs + f + 1e-9);
+    return stiffness * deflection + damping * rate;
+  };
+  D3 fx = force(slip_speed_x, c.normalize_x, s(0), p.longitudinal_stiffness_npm,
+                p.longitudinal_damping_nspm);
+  D3 fy = force(vy, c.normalize_y, s(1), p.lateral_stiffness_npm, p.lateral_damping_nspm);
+  TireForcePartials out;
+  const double rho = ellipse_ratio(c, fx.v, fy.v);
+  if (rho == std::numeric_limits<double>::infinity()) return out;  // no force, no partials
+  if (rho > 1.0) {  // eq. (26): F^D / rho, rho of the duals
+    const D3 ux = fx / c.x.max_force_n, uy = fy / c.y.max_force_n;
+    const D3 rho_d = internal::sqrt(ux * ux + uy * uy);
+    fx = fx / rho_d;
+    fy = fy / rho_d;
+  }
+  for (int j = 0; j < 3; ++j) {
+    out.d_force(0, j) = fx.d[j];
+    out.d_force(1, j) = fy.d[j];
+  }
+  return out;
+}
 
 TireCharacteristic characteristic_at(const TmeasyParams& p, double load_n,
                                      double friction) noexcept {
@@ -71,6 +147,22 @@ SteadyStateForces steady_state_forces(const TmeasyParams& params, const TireKine
   r.long_force_n = r.slip.f_per_slip * r.slip.slip_x;  // eq. (16)
   r.lat_force_n = r.slip.f_per_slip * r.slip.slip_y;   // eq. (17)
   return r;
+}
+
+double aligning_torque_nm(const TmeasyParams& p, const TireKinematics& k, double load_n,
+                          double lat_force_n) noexcept {
+  if (!(load_n > 0.0)) return 0.0;
+  const double q = load_n / p.nominal_load_n;
+  const TmeasyTrail& t = p.trail;
+  // (n/L)_0, s_y0 and s_yE are linear in the load, like TMeasy's slips
+  const double n0 = linear_in_load(t.trail_over_length_nominal, t.trail_over_length_double, q);
+  const double sy0 = linear_in_load(t.zero_slip_nominal, t.zero_slip_double, q);
+  const double sy_end = linear_in_load(t.end_slip_nominal, t.end_slip_double, q);
+  const double lat_slip =
+      -k.lat_speed_mps / (k.rolling_radius_m * std::abs(k.spin_radps) + p.velocity_floor_mps);
+  const double contact_length =
+      std::sqrt(8.0 * p.radius_unloaded_m * load_n / p.vertical_stiffness_npm);
+  return -trail_over_length(n0, sy0, sy_end, lat_slip) * contact_length * lat_force_n;
 }
 
 }  // namespace rig::model::tire

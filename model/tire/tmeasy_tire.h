@@ -204,6 +204,19 @@ struct DampingPaths {
   return {d.x.damping_nspm, d.y.damping_nspm};
 }
 
+/// The complete partial derivatives d(F_x, F_y)/d(v_x, v_y, omega) of the limited forces
+/// (eqs. 14-26) at deflection s, with f moving with the slip (r_D and the characteristic held):
+/// for a model that linearizes the whole tire force in M_VI (the paper's quarter car, whose large
+/// steps need it). The vehicle uses only the stiff damping paths (damping_paths, spin_force).
+/// Exact, by forward-mode dual numbers.
+struct TireForcePartials {
+  Eigen::Matrix<double, 2, 3> d_force = Eigen::Matrix<double, 2, 3>::Zero();  ///< cols v_x, v_y, w
+};
+[[nodiscard]] TireForcePartials tire_force_partials(const TmeasyParams& p,
+                                                    const TireCharacteristic& c,
+                                                    const TireKinematics& k,
+                                                    const Eigen::Vector2d& s) noexcept;
+
 /// The longitudinal force on the wheel's spin equation - the same limited force the framework
 /// applies to the wheel's contact (eq. 26) - and its stiff derivative dF_x/dw (the damping path at
 /// frozen f, not scaled by the limiter), for the wheel-spin stage's implicit inertia.
@@ -218,6 +231,12 @@ struct SpinForce {
   // dF_x/dw = -r_D dF_x/dv_slip: the spin moves the slip speed v_x - r_D w
   return {limited_forces(p, c, s, d).long_force_n, d.x.damping_nspm * k.rolling_radius_m};
 }
+
+/// TMeasy's self-aligning torque M_z = -n F_y: the pneumatic trail n = (n/L) L over the contact
+/// length L = sqrt(8 r_0 dz) falls from (n/L)_0 at zero lateral slip through zero at s_y0 to a
+/// negative dip and back to zero at s_yE (TmeasyTrail; Rill 2011, sec. 3.4.3) [N m].
+[[nodiscard]] double aligning_torque_nm(const TmeasyParams& params, const TireKinematics& k,
+                                        double load_n, double lat_force_n) noexcept;
 
 /// The rolling resistance torque f_r r_D F_z, a dry-friction torque on the wheel's spin (it
 /// opposes the spin and holds a wheel at rest like a brake) [N m].

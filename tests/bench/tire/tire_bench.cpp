@@ -1,50 +1,51 @@
-// TMeasy tire evaluation cost: the full evaluate() (eq. 24/26 with all partials), and the
-// steady-state forces alone (eqs. 14-17).
+// The cost of the one TMeasy law per evaluation, as the vehicle calls it: the characteristic at
+// a wheel load (once per contact and step), slip and f(s) (eqs. 14-17), and the deflection
+// dynamics with the limited forces (eqs. 22-26).
 #include <benchmark/benchmark.h>
 
-#include "model/tire/tmeasy_dual_law.h"
+#include "model/tire/tmeasy_tire.h"
 
 namespace {
 
-using rig::model::tire::legacy::TireDeflection;
-using rig::model::tire::legacy::TireInput;
-using rig::model::tire::legacy::TireOutput;
-using rig::model::tire::legacy::TmeasyTire;
+using rig::model::tire::TireKinematics;
+namespace tire = rig::model::tire;
 
-TireInput cornering_input() {
-  TireInput in;
-  in.long_speed_mps = 20.0;
-  in.lat_speed_mps = -0.6;
-  in.spin_radps = 68.0;
-  in.rolling_radius_m = 0.3;
-  in.load_n = 4100.0;
-  in.friction = 1.0;
-  return in;
-}
+const TireKinematics kCornering{20.0, -0.6, 68.0, 0.3};  // cornering while driving
+constexpr double kLoad = 4100.0;
 
-void BM_TireEvaluate(benchmark::State& state) {
-  const TmeasyTire tire;
-  TireInput in = cornering_input();
-  TireDeflection d{0.002, 0.003};
-  TireOutput out;
+void BM_TireCharacteristic(benchmark::State& state) {
+  const tire::TmeasyParams p = tire::default_215_55_r18();
+  double load = kLoad;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(in);
-    tire.evaluate(in, d, out);
-    benchmark::DoNotOptimize(out);
-    d.long_m += 1e-12;  // keep the call from being hoisted
+    benchmark::DoNotOptimize(load);
+    benchmark::DoNotOptimize(tire::characteristic_at(p, load, 1.0));
   }
 }
-BENCHMARK(BM_TireEvaluate);
+BENCHMARK(BM_TireCharacteristic);
 
-void BM_TireSteadyState(benchmark::State& state) {
-  const TmeasyTire tire;
-  TireInput in = cornering_input();
+void BM_TireSlip(benchmark::State& state) {
+  const tire::TmeasyParams p = tire::default_215_55_r18();
+  const tire::TireCharacteristic c = tire::characteristic_at(p, kLoad, 1.0);
+  TireKinematics k = kCornering;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(in);
-    benchmark::DoNotOptimize(tire.steady_state(in));
+    benchmark::DoNotOptimize(k);
+    benchmark::DoNotOptimize(tire::slip_of(c, k, p.velocity_floor_mps));
   }
 }
-BENCHMARK(BM_TireSteadyState);
+BENCHMARK(BM_TireSlip);
+
+void BM_TireForces(benchmark::State& state) {
+  const tire::TmeasyParams p = tire::default_215_55_r18();
+  const tire::TireCharacteristic c = tire::characteristic_at(p, kLoad, 1.0);
+  const double f = tire::slip_of(c, kCornering, p.velocity_floor_mps).f_per_slip;
+  Eigen::Vector2d s(0.002, 0.003);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(s);
+    benchmark::DoNotOptimize(tire::tire_forces(p, c, kCornering, f, s));
+    s(0) += 1e-12;  // keep the call from being hoisted
+  }
+}
+BENCHMARK(BM_TireForces);
 
 }  // namespace
 

@@ -14,6 +14,7 @@
 #include "model/solver/force_element_stepper.h"
 #include "model/solver/mechanical_stepper.h"
 #include "model/solver/sequential_stepper.h"
+#include "model/tire/tmeasy_force_element.h"
 #include "tests/support/alloc_counter.h"
 
 namespace rig::model::solver {
@@ -280,8 +281,7 @@ TEST(Jacobians, QuarterCarBodyAndTireAnalyticMatchFiniteDifference) {
   const paper::QuarterCarTire tire(params.tire, 3900.0, params.wheel_radius_m);
   for (const auto& [v, w, x_e] :
        {std::tuple{10.0, 34.0, 0.004}, std::tuple{0.3, 0.5, -0.002}, std::tuple{5.0, 18.0, 0.0}}) {
-    Eigen::Matrix<double, 1, 1> s;
-    s << x_e;
+    Eigen::Vector2d s(x_e, 0.0);
     Eigen::Vector2d y(1.0, 0.0), z(v, w);
     paper::QuarterCarBody body(params, tire, y, z, s);
     Eigen::Matrix2d dy_a, dz_a, dy_f, dz_f;
@@ -291,10 +291,12 @@ TEST(Jacobians, QuarterCarBodyAndTireAnalyticMatchFiniteDifference) {
     EXPECT_LT((dz_a - dz_f).norm(), 1e-4 * dz_a.norm()) << "v=" << v << " w=" << w;
     EXPECT_LT((dy_a - dy_f).norm(), 1e-6);
 
-    paper::TireDeflectionElement el(tire, s, z);
-    Eigen::Matrix<double, 1, 1> j_a, j_f, ws, f0, f1;
+    const tire::TireContact contact = tire.contact(v, w);
+    tire::TmeasyForceElement el(params.tire, contact, s);
+    Eigen::Matrix2d j_a, j_f;
+    Eigen::Vector2d ws, f0, f1;
     ASSERT_TRUE(el.rate_jacobian(s, j_a));
-    finite_difference_rate_jacobian<1>(el, s, j_f, ws, f0, f1);
+    finite_difference_rate_jacobian<2>(el, s, j_f, ws, f0, f1);
     EXPECT_NEAR(j_a(0, 0), j_f(0, 0), 1e-4 * std::abs(j_a(0, 0)));
   }
 }

@@ -1,6 +1,7 @@
-// TMeasy tire acceptance tests (issue 3, item 3): steady-state curves against hand computations,
-// stand-still hold (eq. 24), locked wheel (eq. 25), limiter (eq. 26), analytic partials against
-// finite differences, lift-off, zero allocation.
+// TMeasy acceptance tests of the one tire law (model/tire/tmeasy_tire.h): steady-state curves
+// against hand computations, stand-still hold (eq. 24), locked wheel (eq. 25), the elliptic
+// limiter (eq. 26), the damping-path partials against finite differences, lift-off, the aligning
+// torque, zero allocation.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -8,11 +9,11 @@
 #include <random>
 
 #include "model/tire/tmeasy_characteristic.h"
-#include "model/tire/tmeasy_dual_law.h"
+#include "model/tire/tmeasy_tire.h"
 #include "model/tire/vertical_tire_force.h"
 #include "tests/support/alloc_counter.h"
 
-namespace rig::model::tire::legacy {
+namespace rig::model::tire {
 namespace {
 
 constexpr double kR = 0.3;   // rolling radius for the tests [m]
@@ -113,6 +114,39 @@ TEST(TmeasyCharacteristic, SegmentsByHand) {
   EXPECT_NEAR(evaluate_characteristic(c, 0.05).force_n, 5000.0 / (1 + sig * (sig + a - 2)), 1e-9);
 }
 
+// Per-call inputs as the tests state them: the kinematics plus F_z and mu.
+struct TireInput {
+  double long_speed_mps = 0;
+  double lat_speed_mps = 0;
+  double spin_radps = 0;
+  double rolling_radius_m = 0;
+  double load_n = 0;
+  double friction = 1.0;
+};
+TireKinematics kinematics_of(const TireInput& in) {
+  return {in.long_speed_mps, in.lat_speed_mps, in.spin_radps, in.rolling_radius_m};
+}
+SteadyStateForces steady(const TireInput& in, const TmeasyParams& p = default_215_55_r18()) {
+  return steady_state_forces(p, kinematics_of(in), in.load_n, in.friction);
+}
+/// The law as a vehicle evaluates it: the characteristic at F_z and mu, f at the kinematics, the
+/// deflection dynamics and the limited forces at deflection s.
+struct Evaluation {
+  TireCharacteristic characteristic;
+  double f_per_slip = 0;
+  DeflectionDynamics dynamics;
+  TireForces forces;
+};
+Evaluation evaluate(const TireInput& in, const Eigen::Vector2d& s,
+                    const TmeasyParams& p = default_215_55_r18()) {
+  Evaluation e;
+  e.characteristic = characteristic_at(p, in.load_n, in.friction);
+  e.f_per_slip = slip_of(e.characteristic, kinematics_of(in), p.velocity_floor_mps).f_per_slip;
+  e.dynamics = deflection_dynamics(p, e.characteristic, kinematics_of(in), e.f_per_slip, s);
+  e.forces = limited_forces(p, e.characteristic, s, e.dynamics);
+  return e;
+}
+
 // Sets v_x for a prescribed longitudinal slip s_x = s_x^N s^x at spin w.
 TireInput long_slip_input(double fz, double slip, double w) {
   const HandCurve x = hand_long(fz), y = hand_lat(fz);
@@ -127,28 +161,25 @@ TireInput long_slip_input(double fz, double slip, double w) {
 }
 
 TEST(TmeasySteadyState, LongitudinalCurveAtSeveralLoads) {
-  const TmeasyTire tire;
   for (double fz : {1750.0, 3500.0, 5250.0, 7000.0}) {
     const HandCurve h = hand_long(fz);
     for (double slip : {0.02, 0.08, h.sm, 0.5 * (h.sm + h.ss), h.ss, 0.8}) {
       for (double w : {40.0, -25.0}) {
-        const SteadyStateForces f = tire.steady_state(long_slip_input(fz, slip, w));
+        const SteadyStateForces f = steady(long_slip_input(fz, slip, w));
         const double expected = hand_curve(h.df0, h.fm, h.sm, h.fs, h.ss, slip);
         EXPECT_NEAR(f.long_force_n, expected, 1e-6 * h.fm) << "F_z " << fz << " s " << slip;
         EXPECT_NEAR(f.lat_force_n, 0.0, 1e-9);
       }
     }
     // the peak is F_xM from the parabola, and braking is symmetric
-    EXPECT_NEAR(tire.steady_state(long_slip_input(fz, h.sm, 30.0)).long_force_n, h.fm, 1e-6 * h.fm);
-    EXPECT_NEAR(tire.steady_state(long_slip_input(fz, -h.sm, 30.0)).long_force_n, -h.fm,
-                1e-6 * h.fm);
+    EXPECT_NEAR(steady(long_slip_input(fz, h.sm, 30.0)).long_force_n, h.fm, 1e-6 * h.fm);
+    EXPECT_NEAR(steady(long_slip_input(fz, -h.sm, 30.0)).long_force_n, -h.fm, 1e-6 * h.fm);
   }
   // a hand number: F_z = 5250 N (q = 1.5), s = s_xM = 0.13 gives F_xM = 5700 N
-  EXPECT_NEAR(tire.steady_state(long_slip_input(5250, 0.13, 30.0)).long_force_n, 5700.0, 1e-6);
+  EXPECT_NEAR(steady(long_slip_input(5250, 0.13, 30.0)).long_force_n, 5700.0, 1e-6);
 }
 
 TEST(TmeasySteadyState, LateralCurveAtSeveralLoads) {
-  const TmeasyTire tire;
   for (double fz : {1750.0, 3500.0, 7000.0}) {
     const HandCurve x = hand_long(fz), h = hand_lat(fz);
     const double ny = hand_norm_y(x, h);
@@ -160,7 +191,7 @@ TEST(TmeasySteadyState, LateralCurveAtSeveralLoads) {
       in.load_n = fz;
       // eq. (15): s_y^N = -v_y/(r |w| s^y + v_N), s_y = s^y s_y^N
       in.lat_speed_mps = -slip / ny * (kR * 50.0 * ny + kVn);
-      const SteadyStateForces f = tire.steady_state(in);
+      const SteadyStateForces f = steady(in);
       EXPECT_NEAR(f.lat_force_n, hand_curve(h.df0, h.fm, h.sm, h.fs, h.ss, slip), 1e-6 * h.fm);
       EXPECT_NEAR(f.long_force_n, 0.0, 1e-9);
     }
@@ -168,54 +199,48 @@ TEST(TmeasySteadyState, LateralCurveAtSeveralLoads) {
 }
 
 TEST(TmeasySteadyState, CombinedSlipStaysInsideTheFrictionEllipse) {
-  const TmeasyTire tire;
   TireInput in = long_slip_input(3500, 0.1, 40.0);
-  const double pure_x = tire.steady_state(in).long_force_n;
+  const double pure_x = steady(in).long_force_n;
   in.lat_speed_mps = -1.0;
-  const SteadyStateForces f = tire.steady_state(in);
+  const SteadyStateForces f = steady(in);
   EXPECT_LT(f.long_force_n, pure_x);  // lateral slip takes longitudinal force away
   EXPECT_GT(f.lat_force_n, 0.0);
   EXPECT_LE(std::hypot(f.long_force_n, f.lat_force_n), 3900.0 * (1 + 1e-9));
   // generalized: F = f s, with F_x = f s_x^N (eq. 16), F_y = f s_y^N (eq. 17)
-  EXPECT_NEAR(f.long_force_n, f.f_n * f.long_slip_normalized, 1e-9);
-  EXPECT_NEAR(f.lat_force_n, f.f_n * f.lat_slip_normalized, 1e-9);
+  EXPECT_NEAR(f.long_force_n, f.slip.f_per_slip * f.slip.slip_x, 1e-9);
+  EXPECT_NEAR(f.lat_force_n, f.slip.f_per_slip * f.slip.slip_y, 1e-9);
 }
 
 TEST(TmeasyDynamics, StandStillHoldsDeflectionAndForce) {
-  const TmeasyTire tire;
   TireInput in;
   in.rolling_radius_m = kR;
   in.load_n = 3500;
-  const TireDeflection d{0.01, -0.005};
-  TireOutput out;
-  tire.evaluate(in, d, out);
+  const Evaluation e = evaluate(in, {0.01, -0.005});
   // eq. (24) at v_x = 0, w = 0: x_e' = 0, so F_x = c_x x_e is held
-  EXPECT_EQ(out.deflection_rate(0), 0.0);
-  EXPECT_EQ(out.deflection_rate(1), 0.0);
-  EXPECT_DOUBLE_EQ(out.long_force_n, 250e3 * 0.01);
-  EXPECT_DOUBLE_EQ(out.lat_force_n, -175e3 * 0.005);
-  EXPECT_FALSE(out.long_limited);
-  EXPECT_EQ(out.d_rate_d_deflection(0), 0.0);  // no relaxation at rest
+  EXPECT_EQ(e.dynamics.x.rate, 0.0);
+  EXPECT_EQ(e.dynamics.y.rate, 0.0);
+  EXPECT_DOUBLE_EQ(e.forces.long_force_n, 250e3 * 0.01);
+  EXPECT_DOUBLE_EQ(e.forces.lat_force_n, -175e3 * 0.005);
+  EXPECT_FALSE(e.forces.limited);
+  EXPECT_EQ(e.dynamics.x.d_rate_d_deflection, 0.0);  // no relaxation at rest
 }
 
 TEST(TmeasyDynamics, LockedWheelSlidesWithTheContactPoint) {
-  const TmeasyTire tire;
   TireInput in;
   in.rolling_radius_m = kR;
   in.load_n = 3500;
   in.long_speed_mps = 0.5;
   in.lat_speed_mps = -0.3;
   for (double xe : {0.0, 0.005}) {
-    TireOutput out;
-    tire.evaluate(in, {xe, 0.0}, out);
-    EXPECT_NEAR(out.deflection_rate(0), -0.5, 1e-12);              // eq. (25): x_e' = -v_x
-    EXPECT_NEAR(out.deflection_rate(1), 0.3, 1e-12);               // y_e' = -v_y
-    EXPECT_NEAR(out.long_force_n, 250e3 * xe - 2000 * 0.5, 1e-9);  // eq. (22)
+    const Evaluation e = evaluate(in, {xe, 0.0});
+    EXPECT_NEAR(e.dynamics.x.rate, -0.5, 1e-12);                        // eq. (25): x_e' = -v_x
+    EXPECT_NEAR(e.dynamics.y.rate, 0.3, 1e-12);                         // y_e' = -v_y
+    EXPECT_NEAR(e.forces.long_force_n, 250e3 * xe - 2000 * 0.5, 1e-9);  // eq. (22)
   }
 }
 
-TEST(TmeasyDynamics, LimiterHoldsForcesBelowTheirMaxima) {
-  const TmeasyTire tire;
+TEST(TmeasyDynamics, EllipticLimiterHoldsTheCombinedForceOnTheEllipse) {
+  const TmeasyParams p = default_215_55_r18();
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int limited = 0;
@@ -227,69 +252,72 @@ TEST(TmeasyDynamics, LimiterHoldsForcesBelowTheirMaxima) {
     in.spin_radps = 60 * u(rng);
     in.long_speed_mps = in.spin_radps * kR + 5 * u(rng);
     in.lat_speed_mps = 3 * u(rng);
-    const TireDeflection d{0.03 * u(rng), 0.03 * u(rng)};
-    TireOutput out;
-    tire.evaluate(in, d, out);
-    const double fxm = tire.max_long_force_n(in.load_n, in.friction);
-    const double fym = tire.max_lat_force_n(in.load_n, in.friction);
-    ASSERT_LE(std::abs(out.long_force_n), fxm * (1 + 1e-12));
-    ASSERT_LE(std::abs(out.lat_force_n), fym * (1 + 1e-12));
-    if (out.long_limited) {
+    const Eigen::Vector2d s(0.03 * u(rng), 0.03 * u(rng));
+    const Evaluation e = evaluate(in, s);
+    const double fxm = e.characteristic.x.max_force_n, fym = e.characteristic.y.max_force_n;
+    const double rho = std::hypot(e.forces.long_force_n / fxm, e.forces.lat_force_n / fym);
+    ASSERT_LE(rho, 1 + 1e-12);  // eq. (26): never outside the ellipse of the maxima
+    if (e.forces.limited) {
       ++limited;
-      ASSERT_EQ(out.deflection_rate(0), 0.0);  // eq. (26): x_e' = 0
-      ASSERT_NEAR(std::abs(out.long_force_n), fxm, 1e-12 * fxm);
+      ASSERT_NEAR(rho, 1.0, 1e-12);  // on it, in the direction of the dynamic force
+      const double fx = 250e3 * s(0) + 2000 * e.dynamics.x.rate;
+      const double fy = 175e3 * s(1) + 1750 * e.dynamics.y.rate;
+      ASSERT_NEAR(e.forces.long_force_n * fy - e.forces.lat_force_n * fx, 0.0,
+                  1e-9 * std::hypot(fx, fy) * fxm);
     }
+    // the state's clamp: the spring force within the same ellipse
+    Eigen::Vector2d clamped = s;
+    limit_deflection(p, e.characteristic, clamped);
+    ASSERT_LE(std::hypot(250e3 * clamped(0) / fxm, 175e3 * clamped(1) / fym), 1 + 1e-12);
   }
   EXPECT_GT(limited, 1000);  // the sample does exercise the limiter
-  // a deflection whose spring force exceeds F_xM = 3900 N at 3500 N: F = F_xM sign(x_e)
+  // pure longitudinal slip: the paper's clamp. A deflection whose spring force exceeds
+  // F_xM = 3900 N at 3500 N gives F = F_xM sign(x_e)
   TireInput rest;
   rest.rolling_radius_m = kR;
   rest.load_n = 3500;
-  TireOutput out;
-  tire.evaluate(rest, {-0.02, 0.0}, out);
-  EXPECT_TRUE(out.long_limited);
-  EXPECT_DOUBLE_EQ(out.long_force_n, -3900.0);
+  Evaluation e = evaluate(rest, {-0.02, 0.0});
+  EXPECT_TRUE(e.forces.limited);
+  EXPECT_DOUBLE_EQ(e.forces.long_force_n, -3900.0);
   // a wheel locking at 3 m/s with a small opposite deflection: F^D = 250 - 6000 N is limited
   // to -F_xM (the force keeps its direction; it does not flip to sign(x_e))
   rest.long_speed_mps = 3.0;
-  tire.evaluate(rest, {0.001, 0.0}, out);
-  EXPECT_TRUE(out.long_limited);
-  EXPECT_DOUBLE_EQ(out.long_force_n, -3900.0);
-  EXPECT_EQ(out.deflection_rate(0), 0.0);
-  TireDeflection c{-0.02, 0.05};
-  tire.clamp_deflection(3500, 1.0, c);
-  EXPECT_DOUBLE_EQ(c.long_m, -3900.0 / 250e3);
-  EXPECT_DOUBLE_EQ(c.lat_m, 3650.0 / 175e3);
+  e = evaluate(rest, {0.001, 0.0});
+  EXPECT_TRUE(e.forces.limited);
+  EXPECT_DOUBLE_EQ(e.forces.long_force_n, -3900.0);
+  // the clamp of eq. (26) on the state: beyond both maxima, scaled back onto the ellipse along
+  // its own direction (pure: |x_e| = F_xM/c_x)
+  Eigen::Vector2d c(-0.02, 0.05);
+  limit_deflection(p, e.characteristic, c);
+  EXPECT_NEAR(std::hypot(250e3 * c(0) / 3900.0, 175e3 * c(1) / 3650.0), 1.0, 1e-15);
+  EXPECT_NEAR(c(1) / c(0), 0.05 / -0.02, 1e-12);
+  Eigen::Vector2d pure(-0.02, 0.0);
+  limit_deflection(p, e.characteristic, pure);
+  EXPECT_DOUBLE_EQ(pure(0), -3900.0 / 250e3);
 }
 
 TEST(TmeasyDynamics, SteadyStateOfTheDeflectionDynamicsMatchesEq16UpToVn) {
   // x_e' = 0 in eq. (24): c_x x_e = -f (v_x - r w)/(r |w| s^x); eq. (16) has + v_N in the
   // denominator, so the ratio is (r |w| s^x + v_N)/(r |w| s^x).
-  const TmeasyTire tire;
   const TireInput in = long_slip_input(3500, 0.03, 80.0);
-  TireDeflection d{};
-  TireOutput out;
+  Eigen::Vector2d s = Eigen::Vector2d::Zero();
   const double h = 1e-3;
   for (int k = 0; k < 2000; ++k) {  // implicit Euler in x_e (linear in x_e): converges
-    tire.evaluate(in, d, out);
-    d.long_m += h * out.deflection_rate(0) / (1 - h * out.d_rate_d_deflection(0));
+    const DirectionalDynamics x = evaluate(in, s).dynamics.x;
+    s(0) += h * x.rate / (1 - h * x.d_rate_d_deflection);
   }
-  tire.evaluate(in, d, out);
+  const Evaluation e = evaluate(in, s);
   const HandCurve x = hand_long(3500), y = hand_lat(3500);
   const double nx = hand_norm_x(x, y);
-  const double fs = tire.steady_state(in).long_force_n;
-  EXPECT_NEAR(out.long_force_n, fs * (kR * 80 * nx + kVn) / (kR * 80 * nx), 1e-6 * std::abs(fs));
+  const double fs = steady(in).long_force_n;
+  EXPECT_NEAR(e.forces.long_force_n, fs * (kR * 80 * nx + kVn) / (kR * 80 * nx),
+              1e-6 * std::abs(fs));
 }
 
-// Central differences of the outputs by one input.
-TireOutput eval(const TmeasyTire& t, TireInput in, TireDeflection d) {
-  TireOutput o;
-  t.evaluate(in, d, o);
-  return o;
-}
-
-TEST(TmeasyDynamics, AnalyticPartialsMatchFiniteDifferences) {
-  const TmeasyTire tire;
+// The partials the solver uses are those of eq. (24) at frozen f (the stiff damping path,
+// method.md sec. 6): central differences with f held fixed must give them exactly.
+TEST(TmeasyDynamics, PartialsAtFrozenFMatchFiniteDifferences) {
+  const TmeasyParams p = default_215_55_r18();
   struct Case {
     double vx, vy, w, fz, xe, ye;
   };
@@ -301,98 +329,93 @@ TEST(TmeasyDynamics, AnalyticPartialsMatchFiniteDifferences) {
       {0.05, 0.01, 0.1, 3500, 0.002, 0.001},    // near stand-still
   };
   for (const Case& c : cases) {
-    TireInput in;
-    in.long_speed_mps = c.vx;
-    in.lat_speed_mps = c.vy;
-    in.spin_radps = c.w;
-    in.rolling_radius_m = kR;
-    in.load_n = c.fz;
-    const TireDeflection d{c.xe, c.ye};
-    const TireOutput o = eval(tire, in, d);
-    ASSERT_FALSE(o.long_limited || o.lat_limited);
-    for (int j = 0; j < kTirePartialCount; ++j) {
-      const double step[] = {1e-6, 1e-6, 1e-6, 1e-3, 1e-9, 1e-9};
-      TireInput ip = in, im = in;
-      TireDeflection dp = d, dm = d;
-      auto bump = [&](TireInput& i, TireDeflection& dd, double e) {
-        if (j == kByLongSpeed) i.long_speed_mps += e;
-        if (j == kByLatSpeed) i.lat_speed_mps += e;
-        if (j == kBySpin) i.spin_radps += e;
-        if (j == kByLoad) i.load_n += e;
-        if (j == kByLongDeflection) dd.long_m += e;
-        if (j == kByLatDeflection) dd.lat_m += e;
-      };
-      bump(ip, dp, step[j]);
-      bump(im, dm, -step[j]);
-      const TireOutput op = eval(tire, ip, dp), om = eval(tire, im, dm);
-      const double fd_fx = (op.long_force_n - om.long_force_n) / (2 * step[j]);
-      const double fd_fy = (op.lat_force_n - om.lat_force_n) / (2 * step[j]);
-      const double fd_rx = (op.deflection_rate(0) - om.deflection_rate(0)) / (2 * step[j]);
-      const double fd_ry = (op.deflection_rate(1) - om.deflection_rate(1)) / (2 * step[j]);
-      const double tol_f =
-          1e-5 * (1 + std::abs(fd_fx)) + 1e-5 * o.d_force.row(0).cwiseAbs().maxCoeff() * 1e-3;
-      EXPECT_NEAR(o.d_force(0, j), fd_fx, tol_f) << "dFx/d" << j << " vx " << c.vx;
-      EXPECT_NEAR(o.d_force(1, j), fd_fy, 1e-5 * (1 + std::abs(fd_fy))) << "dFy/d" << j;
-      EXPECT_NEAR(o.d_rate(0, j), fd_rx, 1e-5 * (1 + std::abs(fd_rx))) << "dxe'/d" << j;
-      EXPECT_NEAR(o.d_rate(1, j), fd_ry, 1e-5 * (1 + std::abs(fd_ry))) << "dye'/d" << j;
-    }
-    EXPECT_EQ(o.d_rate_d_deflection(0), o.d_rate(0, kByLongDeflection));
-    EXPECT_EQ(o.d_rate_d_deflection(1), o.d_rate(1, kByLatDeflection));
-    // the stiff damping path of M_VI: dF_x/dv_x is the damper d_x times dx_e'/dv_x
-    EXPECT_NEAR(o.d_force(0, kByLongSpeed), 2000.0 * o.d_rate(0, kByLongSpeed), 1e-9);
-    // rolling resistance torque derivative
-    TireInput wp = in, wm = in;
-    wp.spin_radps += 1e-6;
-    wm.spin_radps -= 1e-6;
-    const double fd_t =
-        (eval(tire, wp, d).rolling_torque_nm - eval(tire, wm, d).rolling_torque_nm) / 2e-6;
-    EXPECT_NEAR(o.d_rolling_torque_d_spin, fd_t, 1e-5 * (1 + std::abs(fd_t)));
+    const TireInput in{c.vx, c.vy, c.w, kR, c.fz, 1.0};
+    const Evaluation e = evaluate(in, {c.xe, c.ye});
+    ASSERT_FALSE(e.forces.limited);
+    const TireKinematics k = kinematics_of(in);
+    const auto at = [&](TireKinematics kk, Eigen::Vector2d s) {
+      return deflection_dynamics(p, e.characteristic, kk, e.f_per_slip, s);
+    };
+    const auto force_x = [&](TireKinematics kk) {
+      const DeflectionDynamics d = at(kk, {c.xe, c.ye});
+      return 250e3 * c.xe + 2000 * d.x.rate;
+    };
+    const auto force_y = [&](TireKinematics kk) {
+      const DeflectionDynamics d = at(kk, {c.xe, c.ye});
+      return 175e3 * c.ye + 1750 * d.y.rate;
+    };
+    const double dv = 1e-6, dxe = 1e-9;
+    TireKinematics kp = k, km = k;
+    kp.long_speed_mps += dv;
+    km.long_speed_mps -= dv;
+    EXPECT_NEAR(-(force_x(kp) - force_x(km)) / (2 * dv), e.dynamics.x.damping_nspm,
+                1e-6 * e.dynamics.x.damping_nspm);
+    kp = k;
+    km = k;
+    kp.lat_speed_mps += dv;
+    km.lat_speed_mps -= dv;
+    EXPECT_NEAR(-(force_y(kp) - force_y(km)) / (2 * dv), e.dynamics.y.damping_nspm,
+                1e-6 * e.dynamics.y.damping_nspm);
+    const double fd_rate =
+        (at(k, {c.xe + dxe, c.ye}).x.rate - at(k, {c.xe - dxe, c.ye}).x.rate) / (2 * dxe);
+    EXPECT_NEAR(fd_rate, e.dynamics.x.d_rate_d_deflection,
+                1e-5 * (1 + std::abs(e.dynamics.x.d_rate_d_deflection)));
+    // the spin stage's dF_x/dw = r dF_x/dv_slip, and damping_paths() gives the same paths
+    const SpinForce sf = spin_force(p, e.characteristic, k, e.f_per_slip, {c.xe, c.ye});
+    EXPECT_DOUBLE_EQ(sf.d_force_d_spin, e.dynamics.x.damping_nspm * kR);
+    EXPECT_DOUBLE_EQ(sf.long_force_n, e.forces.long_force_n);
+    const DampingPaths paths = damping_paths(p, e.characteristic, k, e.f_per_slip);
+    EXPECT_EQ(paths.long_nspm, e.dynamics.x.damping_nspm);
+    EXPECT_EQ(paths.lat_nspm, e.dynamics.y.damping_nspm);
   }
 }
 
-TEST(TmeasyDynamics, LiftOffGivesNoForceAndRelaxes) {
-  const TmeasyTire tire;
+TEST(TmeasyDynamics, LiftOffGivesNoForceAndNoDeflection) {
+  const TmeasyParams p = default_215_55_r18();
   for (double fz : {0.0, -100.0}) {
     TireInput in;
     in.long_speed_mps = 10;
     in.spin_radps = 20;
     in.rolling_radius_m = kR;
     in.load_n = fz;
-    TireOutput out;
-    tire.evaluate(in, {0.004, -0.002}, out);
-    EXPECT_TRUE(out.lifted_off);
-    EXPECT_EQ(out.long_force_n, 0.0);
-    EXPECT_EQ(out.lat_force_n, 0.0);
-    EXPECT_EQ(out.aligning_torque_nm, 0.0);
-    EXPECT_DOUBLE_EQ(out.deflection_rate(0), -250e3 / 2000 * 0.004);  // c x_e + d x_e' = 0
-    EXPECT_DOUBLE_EQ(out.deflection_rate(1), 175e3 / 1750 * 0.002);
-    EXPECT_DOUBLE_EQ(out.d_rate_d_deflection(0), -125.0);
-    EXPECT_EQ(tire.steady_state(in).long_force_n, 0.0);
+    const Evaluation e = evaluate(in, {0.004, -0.002});
+    EXPECT_EQ(e.characteristic.x.max_force_n, 0.0);
+    EXPECT_EQ(e.f_per_slip, 0.0);
+    EXPECT_EQ(e.forces.long_force_n, 0.0);
+    EXPECT_EQ(e.forces.lat_force_n, 0.0);
+    EXPECT_TRUE(e.forces.limited);
+    // f = 0: the free spring-damper relaxes, c x_e + d x_e' = 0 (up to the 1e-9 guard)
+    EXPECT_NEAR(e.dynamics.x.rate, -250e3 / 2000 * 0.004, 1e-12);
+    EXPECT_NEAR(e.dynamics.y.rate, 175e3 / 1750 * 0.002, 1e-12);
+    // and the state's clamp empties it at once: no capacity, no deflection
+    Eigen::Vector2d s(0.004, -0.002);
+    limit_deflection(p, e.characteristic, s);
+    EXPECT_EQ(s, Eigen::Vector2d::Zero());
+    EXPECT_EQ(steady(in).long_force_n, 0.0);
   }
 }
 
 TEST(TmeasyTorques, AligningTorqueFromPneumaticTrailAndRollingResistance) {
-  const TmeasyTire tire;
+  const TmeasyParams p = default_215_55_r18();
   TireInput in;
   in.long_speed_mps = 20;
   in.spin_radps = 20 / kR;
   in.rolling_radius_m = kR;
   in.load_n = 3500;
   in.lat_speed_mps = -0.2;  // small lateral slip: trail near n0, M_z restores (opposes F_y)
-  TireOutput out;
-  tire.evaluate(in, {0.0, 0.005}, out);
-  ASSERT_GT(out.lat_force_n, 0.0);
+  const Evaluation e = evaluate(in, {0.0, 0.005});
+  ASSERT_GT(e.forces.lat_force_n, 0.0);
   const double s_y = 0.2 / (20 + 0.5);
   const double l = std::sqrt(8 * 0.3469 * 3500 / 200e3);  // contact length
   const double x = s_y / 0.4, w = 0.4 / 0.6;              // TMeasy trail, first segment
   const double n = 0.178 * ((1 - w) * (1 - x) + w * (1 - (3 - 2 * x) * x * x)) * l;
-  EXPECT_NEAR(out.aligning_torque_nm, -n * out.lat_force_n, 1e-9);
-  // rolling resistance opposes the spin: -f_r F_z r v/(|v| + v_N), v = r w
-  EXPECT_NEAR(out.rolling_torque_nm, -0.01 * 3500 * kR * 20 / 20.5, 1e-9);
+  EXPECT_NEAR(aligning_torque_nm(p, kinematics_of(in), 3500, e.forces.lat_force_n),
+              -n * e.forces.lat_force_n, 1e-9);
+  // rolling resistance: the dry-friction torque f_r r F_z that holds a wheel like a brake
+  EXPECT_DOUBLE_EQ(rolling_resistance_torque_nm(p, 3500, kR), 0.01 * kR * 3500);
   // large lateral slip beyond s_yE: no trail
   in.lat_speed_mps = -15;
-  tire.evaluate(in, {0.0, 0.0}, out);
-  EXPECT_EQ(out.aligning_torque_nm, 0.0);
+  EXPECT_EQ(aligning_torque_nm(p, kinematics_of(in), 3500, 1000.0), 0.0);
 }
 
 TEST(VerticalTire, ForceWithLiftOffAndRollingRadius) {
@@ -412,17 +435,14 @@ TEST(VerticalTire, ForceWithLiftOffAndRollingRadius) {
 }
 
 TEST(TmeasyTire, EvaluationAllocatesNothing) {
-  const TmeasyTire tire;
   TireInput in = long_slip_input(3500, 0.05, 30.0);
   in.lat_speed_mps = 0.3;
-  TireOutput out;
   double sum = 0;
   Eigen::internal::set_is_malloc_allowed(false);
   const rig::test::AllocationCounter counter;
   for (int i = 0; i < 1000; ++i) {
     in.load_n = 2000 + i;
-    tire.evaluate(in, {1e-4 * i, 0.0}, out);
-    sum += out.long_force_n + tire.steady_state(in).lat_force_n;
+    sum += evaluate(in, {1e-4 * i, 0.0}).forces.long_force_n + steady(in).lat_force_n;
   }
   const auto allocations = counter.count();
   Eigen::internal::set_is_malloc_allowed(true);
@@ -431,7 +451,7 @@ TEST(TmeasyTire, EvaluationAllocatesNothing) {
 }
 
 }  // namespace
-}  // namespace rig::model::tire::legacy
+}  // namespace rig::model::tire
 
 // The one tire law as a solver force element (tmeasy_force_element.h), advanced by the solver's
 // eq. (8) force-element stepper.

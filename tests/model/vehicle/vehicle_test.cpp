@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "io/config/vehicle_file.h"
-#include "model/tire/tmeasy_dual_law.h"
+#include "model/tire/tmeasy_tire.h"
 #include "model/vehicle/vehicle_model.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
@@ -37,35 +37,6 @@ void run(VehicleModel& m, Signals& s, double seconds,
     if (inputs) inputs(m.time_s(), s);
     ASSERT_EQ(m.step(s), StepStatus::kOk) << "t = " << m.time_s();
   }
-}
-
-// The one TMeasy law (model/tire: characteristic_at + slip_of, as the vehicle calls them per
-// wheel and step) against the former dual-number implementation's steady state (eqs. 16-17),
-// in adhesion, near the maximum and in sliding, for the sedan's tire.
-TEST(Vehicle, TireCharacteristicIsModelTire) {
-  const tire::TmeasyParams& t = sedan().axles[0].tire.tmeasy;
-  const tire::legacy::TmeasyTire reference(t);
-  const double r = 0.3;
-  int compared = 0;
-  for (double load : {1500.0, 3500.0, 6000.0}) {
-    for (double mu : {1.0, 0.5}) {
-      const tire::TireCharacteristic c = tire::characteristic_at(t, load, mu);
-      for (const auto& [vx, vy, w] :
-           {std::array{20.0, 0.0, 20.0 / r * 1.02}, std::array{20.0, 1.0, 20.0 / r},
-            std::array{20.0, -3.0, 50.0}, std::array{10.0, 2.0, 0.0}, std::array{0.0, 0.0, 0.0}}) {
-        const tire::TireSlip v = tire::slip_of(c, {vx, vy, w, r}, t.velocity_floor_mps);
-        const tire::legacy::SteadyStateForces ref =
-            reference.steady_state({vx, vy, w, r, load, mu});
-        EXPECT_NEAR(v.f_per_slip * v.slip_x, ref.long_force_n, 1e-9 * load) << load << " " << vx;
-        EXPECT_NEAR(v.f_per_slip * v.slip_y, ref.lat_force_n, 1e-9 * load) << load << " " << vy;
-        ++compared;
-      }
-    }
-  }
-  EXPECT_EQ(compared, 30);
-  // lift-off: no force
-  EXPECT_EQ(tire::slip_of(tire::characteristic_at(t, 0.0, 1.0), {10, 1, 0, r}, 0.01).f_per_slip,
-            0.0);
 }
 
 TEST(Vehicle, StaticEquilibrium) {
