@@ -370,6 +370,44 @@ TEST(TmeasyDynamics, PartialsAtFrozenFMatchFiniteDifferences) {
   }
 }
 
+// The complete partials (f moving with the slip, the limiter included) against central
+// differences of the limited forces.
+TEST(TmeasyDynamics, CompletePartialsMatchFiniteDifferences) {
+  const TmeasyParams p = default_215_55_r18();
+  struct Case {
+    double vx, vy, w, fz, xe, ye;
+  };
+  const Case cases[] = {
+      {20.0, 0.0, 70.0, 3500, 0.004, 0.0},      // driving, pure longitudinal
+      {15.0, -0.8, 48.0, 4200, -0.003, 0.002},  // braking while cornering
+      {5.0, 0.6, 17.5, 2600, 0.001, -0.004},    // combined, low speed
+      {-3.0, 0.2, -9.0, 5200, -0.002, 0.001},   // reversing
+      {3.0, 0.0, 0.0, 3500, 0.001, 0.0},        // locked and sliding: limited
+  };
+  for (const Case& c : cases) {
+    const TireCharacteristic ch = characteristic_at(p, c.fz, 1.0);
+    const Eigen::Vector2d s(c.xe, c.ye);
+    const TireKinematics k{c.vx, c.vy, c.w, kR};
+    const auto forces = [&](TireKinematics kk) {
+      const double f = slip_of(ch, kk, p.velocity_floor_mps).f_per_slip;
+      const TireForces t = tire_forces(p, ch, kk, f, s);
+      return Eigen::Vector2d(t.long_force_n, t.lat_force_n);
+    };
+    const TireForcePartials a = tire_force_partials(p, ch, k, s);
+    for (int j = 0; j < 3; ++j) {
+      const double e = 1e-6;
+      TireKinematics kp = k, km = k;
+      double* ps[3] = {&kp.long_speed_mps, &kp.lat_speed_mps, &kp.spin_radps};
+      double* ms[3] = {&km.long_speed_mps, &km.lat_speed_mps, &km.spin_radps};
+      *ps[j] += e;
+      *ms[j] -= e;
+      const Eigen::Vector2d fd = (forces(kp) - forces(km)) / (2 * e);
+      EXPECT_NEAR(a.d_force(0, j), fd(0), 1e-5 * (1 + std::abs(fd(0)))) << c.vx << " col " << j;
+      EXPECT_NEAR(a.d_force(1, j), fd(1), 1e-5 * (1 + std::abs(fd(1)))) << c.vx << " col " << j;
+    }
+  }
+}
+
 TEST(TmeasyDynamics, LiftOffGivesNoForceAndNoDeflection) {
   const TmeasyParams p = default_215_55_r18();
   for (double fz : {0.0, -100.0}) {
