@@ -1,0 +1,60 @@
+#include "rig/snapshot_handoff.h"
+
+#include <algorithm>
+
+namespace rig {
+namespace {
+
+/// A safety net only: every state change the other side waits for is signalled.
+constexpr std::int64_t kOfflineWaitNs = 1'000'000'000;
+
+}  // namespace
+
+SnapshotHandoff::SnapshotHandoff(std::size_t capacity, bool offline)
+    : ring_(capacity), offline_(offline), half_(std::max<std::size_t>(1, capacity / 2)) {}
+
+io::Snapshot* SnapshotHandoff::claim(const std::atomic<bool>& stop) noexcept {
+  io::Snapshot* slot = ring_.claim();
+  if (slot == nullptr && offline_) slot = wait_for_slot(stop);
+  if (slot == nullptr) dropped_.fetch_add(1, std::memory_order_relaxed);
+  return slot;
+}
+
+io::Snapshot* SnapshotHandoff::wait_for_slot(const std::atomic<bool>& stop) noexcept {
+  io::Snapshot* slot = nullptr;
+  while ((slot = ring_.claim()) == nullptr && !stop.load(std::memory_order_relaxed)) {
+    const std::uint32_t key = freed_.prepare_wait();
+    if (ring_.size() <= half_ || stop.load(std::memory_order_relaxed)) {
+      freed_.cancel_wait();
+    } else {
+      freed_.wait(key, kOfflineWaitNs);
+    }
+  }
+  return slot;
+}
+
+void SnapshotHandoff::commit() noexcept {
+  ring_.commit();
+  if (offline_ && ring_.size() >= half_) filled_.notify();
+}
+
+void SnapshotHandoff::close() noexcept {
+  closed_.store(true, std::memory_order_release);
+  filled_.notify();
+}
+
+void SnapshotHandoff::release() noexcept {
+  ring_.release();
+  if (offline_ && ring_.size() <= half_) freed_.notify();
+}
+
+void SnapshotHandoff::wait_for_work(std::int64_t poll_ns) noexcept {
+  const std::uint32_t key = filled_.prepare_wait();
+  if (closed() || (offline_ && ring_.size() >= half_)) {
+    filled_.cancel_wait();
+    return;
+  }
+  filled_.wait(key, offline_ ? kOfflineWaitNs : poll_ns);
+}
+
+}  // namespace rig
