@@ -19,16 +19,23 @@ EventLog::EventLog(const std::string& path, std::size_t capacity) : ring_(capaci
 
 EventLog::~EventLog() { stop(); }
 
-void EventLog::miss(std::int64_t realtime_ns, std::int64_t monotonic_ns,
-                    const io::CycleTiming& timing, std::string_view action) noexcept {
+io::log::LogRecord* EventLog::begin(io::log::LogRecord::Kind kind, std::int64_t realtime_ns,
+                                    std::int64_t monotonic_ns) noexcept {
   io::log::LogRecord* slot = ring_.claim();
   if (slot == nullptr) {
     lost_.fetch_add(1, std::memory_order_relaxed);
-    return;
+    return nullptr;
   }
-  slot->kind = io::log::LogRecord::Kind::kMiss;
+  slot->kind = kind;
   slot->realtime_ns = realtime_ns;
   slot->monotonic_ns = monotonic_ns;
+  return slot;
+}
+
+void EventLog::miss(std::int64_t realtime_ns, std::int64_t monotonic_ns,
+                    const io::CycleTiming& timing, std::string_view action) noexcept {
+  io::log::LogRecord* slot = begin(io::log::LogRecord::Kind::kMiss, realtime_ns, monotonic_ns);
+  if (slot == nullptr) return;
   slot->timing = timing;
   copy_into(slot->name, action);
   slot->detail[0] = '\0';
@@ -37,14 +44,8 @@ void EventLog::miss(std::int64_t realtime_ns, std::int64_t monotonic_ns,
 
 void EventLog::event(std::int64_t realtime_ns, std::int64_t monotonic_ns, std::string_view name,
                      std::string_view detail) noexcept {
-  io::log::LogRecord* slot = ring_.claim();
-  if (slot == nullptr) {
-    lost_.fetch_add(1, std::memory_order_relaxed);
-    return;
-  }
-  slot->kind = io::log::LogRecord::Kind::kEvent;
-  slot->realtime_ns = realtime_ns;
-  slot->monotonic_ns = monotonic_ns;
+  io::log::LogRecord* slot = begin(io::log::LogRecord::Kind::kEvent, realtime_ns, monotonic_ns);
+  if (slot == nullptr) return;
   copy_into(slot->name, name);
   copy_into(slot->detail, detail);
   ring_.commit();

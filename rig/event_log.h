@@ -39,6 +39,10 @@ class EventLog {
   [[nodiscard]] std::uint64_t lost() const noexcept { return lost_.load(); }
 
  private:
+  /// Claims a slot and fills its header, or counts the record as lost (nullptr).
+  io::log::LogRecord* begin(io::log::LogRecord::Kind kind, std::int64_t realtime_ns,
+                            std::int64_t monotonic_ns) noexcept;
+
   rt::SpscRing<io::log::LogRecord> ring_;
   io::log::LogFile file_;
   std::atomic<std::uint64_t> lost_{0};
