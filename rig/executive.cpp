@@ -86,14 +86,13 @@ void Executive::wait_finished(std::int64_t timeout_ns) noexcept {
   finished_event_.wait(key, timeout_ns);
 }
 
-io::IoCounters Executive::io_counters() const noexcept {
-  io::IoCounters sum{};
+void Executive::read_io_counters(io::IoCounters& sum) const noexcept {
+  sum = io::IoCounters{};
   for (const io::CycleIo* a : io_) {
     io::IoCounters c{};
     a->read_counters(c);
     sum += c;
   }
-  return sum;
 }
 
 StopReason Executive::run_loop() {
@@ -160,7 +159,7 @@ OverrunDecision Executive::handoff(io::CycleTiming& t, PhaseTimer& phases,
   if (slot != nullptr) {
     slot->signals = signals_;
     model_.fill_report(slot->report);
-    slot->can = io_counters();
+    read_io_counters(slot->can);
   }
   end_ns = phases.end(io::Phase::kHandoff);
   t.compute_ns = end_ns - t.wake_ns;

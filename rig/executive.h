@@ -114,7 +114,11 @@ class Executive {
   /// After the loop stopped.
   [[nodiscard]] const model::Signals& signals() const noexcept { return signals_; }
   /// The counters of every I/O adapter, summed (io/io_counters.h).
-  [[nodiscard]] io::IoCounters io_counters() const noexcept;
+  [[nodiscard]] io::IoCounters io_counters() const noexcept {
+    io::IoCounters sum{};
+    read_io_counters(sum);
+    return sum;
+  }
   [[nodiscard]] const io::RunInfo& run_info() const noexcept { return info_; }
   /// Why RT settings were refused ("" if all were granted), after prepare().
   [[nodiscard]] const std::string& rt_problems() const noexcept { return rt_problems_; }
@@ -127,6 +131,7 @@ class Executive {
   void record(const io::CycleTiming& timing, const OverrunDecision& decision,
               std::int64_t end_ns) noexcept;
   void finish(StopReason reason) noexcept;
+  void read_io_counters(io::IoCounters& sum) const noexcept;
   void loop_thread_main();
   void apply_rt_settings();
 

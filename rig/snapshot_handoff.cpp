@@ -13,16 +13,9 @@ constexpr std::int64_t kOfflineWaitNs = 1'000'000'000;
 SnapshotHandoff::SnapshotHandoff(std::size_t capacity, bool offline)
     : ring_(capacity), offline_(offline), half_(std::max<std::size_t>(1, capacity / 2)) {}
 
-io::Snapshot* SnapshotHandoff::claim(const std::atomic<bool>& stop) noexcept {
-  io::Snapshot* slot = ring_.claim();
-  if (slot == nullptr && offline_) slot = wait_for_slot(stop);
-  if (slot == nullptr) dropped_.fetch_add(1, std::memory_order_relaxed);
-  return slot;
-}
-
-io::Snapshot* SnapshotHandoff::wait_for_slot(const std::atomic<bool>& stop) noexcept {
+io::Snapshot* SnapshotHandoff::claim_full(const std::atomic<bool>& stop) noexcept {
   io::Snapshot* slot = nullptr;
-  while ((slot = ring_.claim()) == nullptr && !stop.load(std::memory_order_relaxed)) {
+  while (offline_ && (slot = ring_.claim()) == nullptr && !stop.load(std::memory_order_relaxed)) {
     const std::uint32_t key = freed_.prepare_wait();
     if (ring_.size() <= half_ || stop.load(std::memory_order_relaxed)) {
       freed_.cancel_wait();
@@ -30,12 +23,8 @@ io::Snapshot* SnapshotHandoff::wait_for_slot(const std::atomic<bool>& stop) noex
       freed_.wait(key, kOfflineWaitNs);
     }
   }
+  if (slot == nullptr) dropped_.fetch_add(1, std::memory_order_relaxed);
   return slot;
-}
-
-void SnapshotHandoff::commit() noexcept {
-  ring_.commit();
-  if (offline_ && ring_.size() >= half_) filled_.notify();
 }
 
 void SnapshotHandoff::close() noexcept {

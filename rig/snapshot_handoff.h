@@ -28,9 +28,15 @@ class SnapshotHandoff {
   // ---- loop thread ----
   /// The slot to fill, or nullptr (counted as dropped): in real time when the ring is full;
   /// offline only when `stop` was set while it waited for the dispatcher.
-  io::Snapshot* claim(const std::atomic<bool>& stop) noexcept;
+  io::Snapshot* claim(const std::atomic<bool>& stop) noexcept {
+    io::Snapshot* slot = ring_.claim();
+    return slot != nullptr ? slot : claim_full(stop);
+  }
   /// Publishes the claimed slot; offline, wakes the dispatcher once half a ring is waiting.
-  void commit() noexcept;
+  void commit() noexcept {
+    ring_.commit();
+    if (offline_ && ring_.size() >= half_) filled_.notify();
+  }
   /// The loop has stopped: nothing more comes. Wakes the dispatcher.
   void close() noexcept;
   /// Wakes a claim() waiting offline so that it sees `stop` (async-signal-safe).
@@ -49,7 +55,8 @@ class SnapshotHandoff {
   }
 
  private:
-  io::Snapshot* wait_for_slot(const std::atomic<bool>& stop) noexcept;
+  /// The ring was full: offline, wait for the dispatcher; in real time, drop (counted).
+  io::Snapshot* claim_full(const std::atomic<bool>& stop) noexcept;
 
   rt::SpscRing<io::Snapshot> ring_;
   const bool offline_;
