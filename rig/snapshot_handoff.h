@@ -8,7 +8,7 @@
 /// back-pressure instead of drops (every sink sees every cycle, so runs are deterministic), and
 /// the two sides hand over in half-ring batches: the dispatcher sleeps until half a ring is
 /// filled, a loop that finds the ring full sleeps until half of it is free. Neither sleeps a
-/// fixed time, and a wake-up costs one futex call per half ring, not per cycle.
+/// fixed time, and a hand-over costs one futex wake per half ring, not per cycle.
 
 #include <atomic>
 #include <cstddef>
@@ -35,7 +35,7 @@ class SnapshotHandoff {
   /// Publishes the claimed slot; offline, wakes the dispatcher once half a ring is waiting.
   void commit() noexcept {
     ring_.commit();
-    if (offline_ && ring_.size() >= half_) filled_.notify();
+    if (offline_ && ring_.size() >= wake_dispatcher_at_) filled_.notify();
   }
   /// The loop has stopped: nothing more comes. Wakes the dispatcher.
   void close() noexcept;
@@ -60,7 +60,8 @@ class SnapshotHandoff {
 
   rt::SpscRing<io::Snapshot> ring_;
   const bool offline_;
-  const std::size_t half_;  ///< the batch of an offline hand-over
+  const std::size_t wake_dispatcher_at_;  ///< offline: fill level that wakes the dispatcher
+  const std::size_t wake_loop_at_;        ///< offline: fill level that wakes a waiting loop
   std::atomic<std::uint64_t> dropped_{0};
   std::atomic<bool> closed_{false};
   rt::EventCount filled_;  ///< the dispatcher waits here

@@ -21,14 +21,14 @@ std::uint32_t* word(std::atomic<std::uint32_t>& a) noexcept {
 }  // namespace
 
 std::uint32_t EventCount::prepare_wait() noexcept {
-  waiters_.fetch_add(1, std::memory_order_relaxed);
-  // Pairs with the fence in notify(): either the notifier sees this waiter, or the waiter's
+  armed_.store(1, std::memory_order_relaxed);
+  // Pairs with the fence in notify(): either the notifier sees the waiter armed, or the waiter's
   // re-check sees the notifier's state change.
   std::atomic_thread_fence(std::memory_order_seq_cst);
   return epoch_.load(std::memory_order_acquire);
 }
 
-void EventCount::cancel_wait() noexcept { waiters_.fetch_sub(1, std::memory_order_relaxed); }
+void EventCount::cancel_wait() noexcept { armed_.store(0, std::memory_order_relaxed); }
 
 void EventCount::wait(std::uint32_t key, std::int64_t timeout_ns) noexcept {
   if (timeout_ns < 0) timeout_ns = 0;
@@ -37,12 +37,15 @@ void EventCount::wait(std::uint32_t key, std::int64_t timeout_ns) noexcept {
   timeout.tv_nsec = static_cast<long>(timeout_ns % 1'000'000'000);
   // Returns at once if a notify() already moved the epoch past `key`.
   (void)syscall(SYS_futex, word(epoch_), FUTEX_WAIT_PRIVATE, key, &timeout, nullptr, 0);
-  waiters_.fetch_sub(1, std::memory_order_relaxed);
+  armed_.store(0, std::memory_order_relaxed);
 }
 
 void EventCount::notify() noexcept {
   std::atomic_thread_fence(std::memory_order_seq_cst);
-  if (waiters_.load(std::memory_order_relaxed) == 0) return;
+  // Only the first notify() after an announcement wakes: the others find the waiter disarmed.
+  if (armed_.load(std::memory_order_relaxed) == 0 ||
+      armed_.exchange(0, std::memory_order_relaxed) == 0)
+    return;
   epoch_.fetch_add(1, std::memory_order_release);
   (void)syscall(SYS_futex, word(epoch_), FUTEX_WAKE_PRIVATE, INT_MAX, nullptr, nullptr, 0);
 }
