@@ -2,12 +2,17 @@
 /// @file
 /// The interface the executive's loop calls on each I/O adapter (CAN, ...) once per cycle.
 
+#include <bitset>
 #include <cstdint>
 
 #include "io/io_counters.h"
 #include "model/signals.h"
 
 namespace rig::io {
+
+/// A set of model inputs (bit model::index(signal)), e.g. those an adapter feeds. Decided once
+/// at start (the rig's routing) and handed to each adapter at construction.
+using InputSet = std::bitset<model::kSignalCount>;
 
 /// An adapter that exchanges model signals with the outside once per cycle. Both calls run on
 /// the RT thread: non-blocking, allocation-free, no exceptions. Failures are counted, never fatal.
@@ -18,8 +23,8 @@ class CycleIo {
   CycleIo& operator=(const CycleIo&) = delete;
   virtual ~CycleIo() = default;
 
-  /// Inputs phase: drains everything pending and writes the inputs this adapter owns
-  /// (those whose source is kCan for CAN), marking stale ones invalid with their fallback value.
+  /// Inputs phase: drains everything pending and writes the inputs this adapter feeds (the set
+  /// it was constructed with), marking stale ones invalid with their fallback value.
   virtual void receive(std::int64_t monotonic_ns, model::Signals& inputs) noexcept = 0;
   /// Outputs phase: encodes and sends what is due at this time.
   virtual void transmit(std::int64_t monotonic_ns, const model::Signals& outputs) noexcept = 0;

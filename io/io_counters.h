@@ -6,6 +6,7 @@
 
 namespace rig::io {
 
+/// In order of severity (summing counters keeps the worst).
 enum class BusState : std::uint8_t { kDisabled, kUp, kDown };
 
 struct IoCounters {
@@ -24,5 +25,27 @@ struct IoCounters {
   std::uint64_t send_dropped = 0;
   std::uint64_t reopens = 0;  ///< interface down/vanished and reopened
 };
+
+/// Sums the counters of several adapters: counts add up; the bus state is the worst one
+/// (disabled < up < down), so one adapter without a bus does not hide another's.
+constexpr IoCounters& operator+=(IoCounters& sum, const IoCounters& c) noexcept {
+  if (c.bus_state > sum.bus_state) sum.bus_state = c.bus_state;
+  sum.frames_received += c.frames_received;
+  sum.rx_overflows += c.rx_overflows;
+  sum.frames_sent += c.frames_sent;
+  sum.timeouts += c.timeouts;
+  sum.checksum_failures += c.checksum_failures;
+  sum.counter_failures += c.counter_failures;
+  sum.bad_frames += c.bad_frames;
+  sum.unknown_frames += c.unknown_frames;
+  sum.error_frames += c.error_frames;
+  sum.out_of_range += c.out_of_range;
+  sum.send_no_buffer += c.send_no_buffer;
+  sum.send_dropped += c.send_dropped;
+  sum.reopens += c.reopens;
+  return sum;
+}
+static_assert(sizeof(IoCounters) == 8 + 13 * sizeof(std::uint64_t),
+              "a new counter must be summed in operator+=");
 
 }  // namespace rig::io

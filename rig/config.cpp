@@ -25,9 +25,7 @@ RigSettings read_rig(io::config::StrictTable& t) {
   s.cpu = static_cast<int>(t.number_in("cpu", -1, -1, 1023));
   const std::string policy =
       t.choice("overrun_policy", "skip", {"skip", "catch-up", "abort-after"});
-  s.policy = policy == "skip"       ? OverrunPolicy::kSkip
-             : policy == "catch-up" ? OverrunPolicy::kCatchUp
-                                    : OverrunPolicy::kAbortAfter;
+  s.policy = *overrun_policy_by_key(policy);
   s.abort_after = static_cast<int>(t.number_in("abort_after", 10, 1, 1e6));
   s.status_interval_s = t.number_in("status_interval_s", 5.0, 0.1, 3600.0);
   t.finish();
@@ -78,74 +76,45 @@ driver::PathDriverVehicle path_driver_vehicle(const ModelSettings& m) {
   return v;
 }
 
-/// Marks the inputs a driver writes as kDriver; an input routed to CAN stays with CAN.
-void route_path_driver(RigConfig& c) {
-  using model::Signal;
-  for (const Signal s :
-       {Signal::kSteeringWheelAngleCmd, Signal::kThrottlePedal, Signal::kBrakePressureFront,
-        Signal::kBrakePressureRear, Signal::kGearRequest}) {
-    auto& src = c.routing[model::index(s)];
-    if (src != model::SignalSource::kCan) src = model::SignalSource::kDriver;
+/// [driver]: a table or a path driver. A table column must not be routed to CAN.
+void read_driver(io::config::StrictTable& t, const RoutingRequests& requests, RigConfig& c) {
+  const std::string kind = t.choice("kind", "table", {"table", "path"});
+  if (kind == "path") {
+    c.path_driver = driver::read_path_driver(t, path_driver_vehicle(c.model));
+    return;
+  }
+  c.driver = driver::read_table_driver(t);
+  for (const model::Signal s : c.driver->columns) {
+    if (requests[model::index(s)] == RouteRequest::kCan)
+      throw t.error("columns",
+                    "'" + std::string(model::info(s).name) + "' is routed to CAN in [routing]");
   }
 }
 
-void read_routing(io::config::StrictTable& t, RigConfig& c) {
-  for (auto&& [key, node] : t.raw()) {
-    const std::string name(key.str());
-    const auto sig = model::signal_by_name(name);
-    if (!sig) throw t.error(name, "unknown signal '" + name + "'");
-    if (!model::info(*sig).is_input)
-      throw t.error(name, "'" + name + "' is an output; only inputs are routed");
-    const std::string src = t.choice(name, "driver", {"driver", "can"});
-    c.routing[model::index(*sig)] =
-        src == "can" ? model::SignalSource::kCan : model::SignalSource::kDriver;
-  }
-  t.finish();
+/// The inputs the configured driver can write.
+io::InputSet driver_writes(const RigConfig& c) {
+  if (c.path_driver) return driver::path_driver_inputs();
+  if (c.driver) return driver::table_driver_inputs(*c.driver);
+  return {};
 }
 
 }  // namespace
-
-std::string policy_name(OverrunPolicy policy, int abort_after) {
-  switch (policy) {
-    case OverrunPolicy::kSkip:
-      return "skip";
-    case OverrunPolicy::kCatchUp:
-      return "catch-up";
-    case OverrunPolicy::kAbortAfter:
-      return "abort-after=" + std::to_string(abort_after);
-  }
-  return "?";
-}
 
 RigConfig load_config(const std::filesystem::path& file) {
   const toml::table doc = io::config::load_toml_file(file);
   io::config::StrictTable top(doc, file, "top level");
   RigConfig c;
   c.file = file;
-  c.routing.fill(model::SignalSource::kModel);
   if (auto t = top.optional_table("rig")) c.rig = read_rig(*t);
   if (auto t = top.optional_table("model")) c.model = read_model(*t);
   // Routing before the driver: a table column must not be routed to CAN.
-  if (auto t = top.optional_table("routing")) read_routing(*t, c);
-  if (auto t = top.optional_table("driver")) {
-    const std::string kind = t->choice("kind", "table", {"table", "path"});
-    if (kind == "path") {
-      c.path_driver = driver::read_path_driver(*t, path_driver_vehicle(c.model));
-      route_path_driver(c);
-    } else {
-      c.driver = driver::read_table_driver(*t);
-      for (const model::Signal s : c.driver->columns) {
-        auto& src = c.routing[model::index(s)];
-        if (src == model::SignalSource::kCan)
-          throw t->error("columns", "'" + std::string(model::info(s).name) +
-                                        "' is routed to CAN in [routing]");
-        src = model::SignalSource::kDriver;
-      }
-    }
-  }
+  RoutingRequests requests{};
+  if (auto t = top.optional_table("routing")) requests = read_routing(*t);
+  if (auto t = top.optional_table("driver")) read_driver(*t, requests, c);
   if (auto t = top.optional_table("can")) c.can = io::can::bridge::read_can_settings(*t);
   if (auto t = top.optional_table("lcm")) c.lcm = io::lcm::read_lcm_settings(*t);
   top.finish();  // unknown top-level sections
+  c.routing = resolve_routing(requests, driver_writes(c));
   return c;
 }
 

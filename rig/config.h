@@ -2,9 +2,8 @@
 /// @file
 /// The rig's configuration file: [rig] run settings, [model], [driver], [routing]. Each section
 /// is read by its owner's function; unknown sections and keys are ConfigErrors with file:line.
+/// The routing is resolved here, once, from [routing] and the [driver] (rig/routing.h).
 
-#include <array>
-#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -14,13 +13,12 @@
 #include "io/config/vehicle_file.h"
 #include "io/lcm/lcm_settings.h"
 #include "model/paper/quarter_car_params.h"
-#include "model/signals.h"
 #include "rig/driver/path_driver.h"
 #include "rig/driver/table_driver.h"
+#include "rig/overrun_policy.h"
+#include "rig/routing.h"
 
 namespace rig {
-
-enum class OverrunPolicy : std::uint8_t { kSkip, kCatchUp, kAbortAfter };
 
 /// [rig]
 struct RigSettings {
@@ -47,16 +45,13 @@ struct RigConfig {
   ModelSettings model;
   std::optional<driver::TableDriverParams> driver;      ///< [driver] kind = "table"
   std::optional<driver::PathDriverParams> path_driver;  ///< [driver] kind = "path"
-  /// Source of each input signal ([routing]); kDriver for inputs the driver table has.
-  std::array<model::SignalSource, model::kSignalCount> routing{};
+  /// Which source feeds each input: [routing], and the inputs the driver writes.
+  Routing routing;
   io::lcm::LcmSettings lcm;  ///< [lcm] (optional): URL, channel prefix, rates
   std::optional<io::can::bridge::CanSettings> can;  ///< [can], read by io/can's read_can_settings
 };
 
 /// Loads and validates a configuration file. Throws ConfigError("file:line: ...").
 RigConfig load_config(const std::filesystem::path& file);
-
-/// "skip", "catch-up" or "abort-after=N".
-std::string policy_name(OverrunPolicy policy, int abort_after);
 
 }  // namespace rig

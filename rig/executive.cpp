@@ -1,14 +1,10 @@
 #include "rig/executive.h"
 
-#include <pthread.h>
-#include <sched.h>
-#include <sys/mman.h>
-#include <sys/prctl.h>
-
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+
+#include "rig/rt/thread_setup.h"
 
 namespace rig {
 namespace {
@@ -24,6 +20,12 @@ void sleep_ms(std::int64_t ms) noexcept {
 }
 
 }  // namespace
+
+/// The loop thread's position on the deadline grid.
+struct Executive::LoopState {
+  std::int64_t deadline_ns = 0;
+  std::uint64_t cycle = 0;
+};
 
 const char* stop_reason_name(StopReason reason) {
   switch (reason) {
@@ -43,210 +45,190 @@ const char* stop_reason_name(StopReason reason) {
   return "?";
 }
 
-Executive::Executive(const ExecutiveParams& params, Clock& clock, model::SteppedModel& model,
+Executive::Executive(const ExecutiveParams& params, rt::Clock& clock, model::SteppedModel& model,
                      driver::Driver* driver, std::vector<io::CycleIo*> io,
-                     std::vector<io::SnapshotSink*> sinks, io::log::EventLog& log,
-                     const std::array<model::SignalSource, model::kSignalCount>& routing)
+                     std::vector<io::SnapshotSink*> sinks, EventLog& log, const Sources& sources)
     : params_(params),
+      overrun_{params.policy, static_cast<std::uint32_t>(params.abort_after)},
+      period_ns_(to_ns(params.period_s)),
       clock_(clock),
       model_(model),
       driver_(driver),
       io_(std::move(io)),
-      sinks_(std::move(sinks)),
       log_(log),
-      ring_(params.snapshot_capacity) {
-  signals_.source = routing;
+      handoff_(params.snapshot_capacity, params.offline),
+      dispatcher_(handoff_, std::move(sinks), log) {
+  signals_.source = sources;
   info_.period_s = params.period_s;
   info_.offline = params.offline;
   info_.policy = policy_name(params.policy, params.abort_after);
 }
 
 Executive::~Executive() {
-  if (loop_thread_.joinable() || dispatcher_.joinable()) {
+  if (loop_thread_.joinable()) {
     request_stop();
-    go_.store(true);
-    join();
+    go();
   }
+  join();
 }
 
-io::IoCounters Executive::can_counters() const noexcept {
-  io::IoCounters c{};
-  if (!io_.empty()) io_.front()->read_counters(c);
-  return c;
+void Executive::request_stop() noexcept {
+  stop_requested_.store(true, std::memory_order_relaxed);
+  handoff_.interrupt();  // an offline loop waiting for the dispatcher
 }
 
-void Executive::handoff(const io::CycleTiming& timing, std::int64_t& handoff_end_ns) noexcept {
-  io::Snapshot* slot = ring_.claim();
-  if (slot == nullptr && params_.offline) {
-    // Offline: wait for the dispatcher rather than drop, so that every sink sees every cycle.
-    while ((slot = ring_.claim()) == nullptr && !stop_requested_.load(std::memory_order_relaxed)) {
-      sched_yield();
-    }
+void Executive::wait_finished(std::int64_t timeout_ns) noexcept {
+  const std::uint32_t key = finished_event_.prepare_wait();
+  if (finished()) {
+    finished_event_.cancel_wait();
+    return;
   }
-  if (slot == nullptr) {
-    dropped_.fetch_add(1, std::memory_order_relaxed);
-  } else {
-    slot->timing = timing;
-    slot->signals = signals_;
-    model_.fill_report(slot->report);
-    if (!io_.empty()) {
-      io_.front()->read_counters(slot->can);
-    } else {
-      slot->can = io::IoCounters{};
-    }
-  }
-  handoff_end_ns = clock_.now_ns();
-  if (slot != nullptr) {
-    slot->timing.phase_ns[static_cast<std::size_t>(io::Phase::kHandoff)] =
-        handoff_end_ns - timing.wake_ns - timing.compute_ns;
-    ring_.commit();
+  finished_event_.wait(key, timeout_ns);
+}
+
+void Executive::read_io_counters(io::IoCounters& sum) const noexcept {
+  sum = io::IoCounters{};
+  for (const io::CycleIo* a : io_) {
+    io::IoCounters c{};
+    a->read_counters(c);
+    sum += c;
   }
 }
 
 StopReason Executive::run_loop() {
-  const std::int64_t period_ns = to_ns(params_.period_s);
+  start_ns_ = clock_.now_ns();
+  LoopState loop{start_ns_ + period_ns_, 0};
   const std::int64_t duration_ns = to_ns(params_.duration_s);
-  const std::int64_t start_ns = clock_.now_ns();
-  std::int64_t deadline = start_ns + period_ns;
-  std::uint32_t consecutive = 0;
-  std::uint64_t cycle = 0;
   StopReason reason = StopReason::kNone;
-  io::CycleTiming t{};
-  char action[24];
-
   while (reason == StopReason::kNone) {
     if (stop_requested_.load(std::memory_order_relaxed)) {
       reason = StopReason::kRequested;
-      break;
-    }
-    if (duration_ns > 0 && deadline - start_ns > duration_ns) {
+    } else if (duration_ns > 0 && loop.deadline_ns - start_ns_ > duration_ns) {
       reason = StopReason::kDuration;
-      break;
-    }
-    clock_.sleep_until(deadline);
-    const std::int64_t wake = clock_.now_ns();
-    t.cycle = cycle;
-    t.deadline_ns = deadline;
-    t.wake_ns = wake;
-    t.lateness_ns = wake - deadline;
-
-    for (io::CycleIo* a : io_) a->receive(wake, signals_);
-    const std::int64_t t_inputs = clock_.now_ns();
-    if (driver_ != nullptr) driver_->update(model_.time_s(), signals_);
-    const std::int64_t t_driver = clock_.now_ns();
-    if (params_.stall_ms > 0 && cycle == params_.stall_cycle) sleep_ms(params_.stall_ms);
-    const model::StepStatus status = model_.step(signals_);
-    const std::int64_t t_model = clock_.now_ns();
-    for (io::CycleIo* a : io_) a->transmit(t_model, signals_);
-    const std::int64_t t_outputs = clock_.now_ns();
-
-    t.sim_time_s = model_.time_s();
-    t.phase_ns[0] = t_inputs - wake;
-    t.phase_ns[1] = t_driver - t_inputs;
-    t.phase_ns[2] = t_model - t_driver;
-    t.phase_ns[3] = t_outputs - t_model;
-    t.phase_ns[4] = 0;
-    t.compute_ns = t_outputs - wake;
-    // Predict the miss before the handoff so the snapshot carries it; recomputed below.
-    std::int64_t end = 0;
-    t.deadline_miss = t_outputs > deadline + period_ns;
-    t.consecutive_misses = t.deadline_miss ? consecutive + 1 : 0;
-    handoff(t, end);
-    t.phase_ns[4] = end - t_outputs;
-    t.compute_ns = end - wake;
-    t.deadline_miss = end > deadline + period_ns;  // work ended after the next deadline
-
-    lateness_.add(t.lateness_ns);
-    compute_.add(t.compute_ns);
-    for (std::size_t p = 0; p < io::kPhaseCount; ++p) phases_[p].add(t.phase_ns[p]);
-    sim_time_s_.store(t.sim_time_s, std::memory_order_relaxed);
-    loop_time_s_.store(static_cast<double>(end - start_ns) * 1e-9, std::memory_order_relaxed);
-
-    std::int64_t next = deadline + period_ns;
-    if (t.deadline_miss) {
-      ++consecutive;
-      t.consecutive_misses = consecutive;
-      misses_.fetch_add(1, std::memory_order_relaxed);
-      if (params_.policy == OverrunPolicy::kCatchUp) {
-        std::snprintf(action, sizeof action, "catch-up");
-      } else {
-        // skip (and abort-after until it fires): next deadline = first grid point after `end`.
-        const std::int64_t k = (end - deadline) / period_ns + 1;
-        next = deadline + k * period_ns;
-        skipped_.fetch_add(static_cast<std::uint64_t>(k - 1), std::memory_order_relaxed);
-        std::snprintf(action, sizeof action, "skip:%lld", static_cast<long long>(k - 1));
-        if (params_.policy == OverrunPolicy::kAbortAfter &&
-            consecutive >= static_cast<std::uint32_t>(params_.abort_after)) {
-          std::snprintf(action, sizeof action, "abort");
-          reason = StopReason::kAbortAfter;
-        }
-      }
-      log_.miss(clock_.realtime_ns(), end, t, action);
     } else {
-      consecutive = 0;
+      reason = cycle(loop);
     }
-    ++cycle;
-    cycles_.store(cycle, std::memory_order_release);
-    if (hook_ != nullptr) hook_->on_cycle(cycle);
-
-    if (status == model::StepStatus::kNonFinite) {
-      char detail[160];
-      std::snprintf(detail, sizeof detail,
-                    "model step produced a non-finite value at cycle %llu, t = %.6f s; stopping",
-                    static_cast<unsigned long long>(t.cycle), t.sim_time_s);
-      log_.event(clock_.realtime_ns(), end, "non_finite", detail);
-      reason = StopReason::kNonFinite;
-    }
-    deadline = next;
   }
-  reason_ = reason;
-  finished_.store(true, std::memory_order_release);
+  finish(reason);
   return reason;
 }
 
-std::size_t Executive::drain_snapshots() {
-  std::size_t n = 0;
-  while (const io::Snapshot* s = ring_.front()) {
-    const std::uint64_t dropped = dropped_.load(std::memory_order_relaxed);
-    for (io::SnapshotSink* sink : sinks_) sink->consume(*s, dropped - dropped_seen_);
-    dropped_seen_ = dropped;
-    ring_.release();
-    ++n;
+StopReason Executive::cycle(LoopState& loop) noexcept {
+  clock_.sleep_until(loop.deadline_ns);
+  io::CycleTiming t{};
+  t.cycle = loop.cycle;
+  t.deadline_ns = loop.deadline_ns;
+  t.wake_ns = clock_.now_ns();
+  t.lateness_ns = t.wake_ns - t.deadline_ns;
+  PhaseTimer phases(clock_, t);
+
+  for (io::CycleIo* a : io_) a->receive(t.wake_ns, signals_);
+  phases.end(io::Phase::kInputs);
+  if (driver_ != nullptr) driver_->update(model_.time_s(), signals_);
+  phases.end(io::Phase::kDriver);
+  if (params_.stall_ms > 0 && loop.cycle == params_.stall_cycle) sleep_ms(params_.stall_ms);
+  const model::StepStatus status = model_.step(signals_);
+  const std::int64_t model_end_ns = phases.end(io::Phase::kModel);
+  for (io::CycleIo* a : io_) a->transmit(model_end_ns, signals_);
+  phases.end(io::Phase::kOutputs);
+  t.sim_time_s = model_.time_s();
+
+  std::int64_t end_ns = 0;
+  const OverrunDecision decision = handoff(t, phases, end_ns);
+  record(t, decision, end_ns);
+  loop.deadline_ns = decision.next_deadline_ns;
+  cycles_.store(++loop.cycle, std::memory_order_release);
+  if (hook_ != nullptr) hook_->on_cycle(loop.cycle);
+
+  if (status == model::StepStatus::kNonFinite) {
+    char detail[160];
+    std::snprintf(detail, sizeof detail,
+                  "model step produced a non-finite value at cycle %llu, t = %.6f s; stopping",
+                  static_cast<unsigned long long>(t.cycle), t.sim_time_s);
+    log_.event(clock_.realtime_ns(), end_ns, "non_finite", detail);
+    return StopReason::kNonFinite;
   }
-  return n;
+  return decision.action == OverrunAction::kAbort ? StopReason::kAbortAfter : StopReason::kNone;
 }
 
-void Executive::dispatcher_main() {
-  while (!finished_.load(std::memory_order_acquire)) {
-    if (drain_snapshots() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+/// The handoff phase: fills a snapshot, ends the phase, decides on the overrun once (so that the
+/// snapshot carries the same decision as the log and the statistics) and commits.
+OverrunDecision Executive::handoff(io::CycleTiming& t, PhaseTimer& phases,
+                                   std::int64_t& end_ns) noexcept {
+  io::Snapshot* slot = handoff_.claim(stop_requested_);
+  if (slot != nullptr) {
+    slot->signals = signals_;
+    model_.fill_report(slot->report);
+    read_io_counters(slot->can);
   }
-  drain_snapshots();
-  for (io::SnapshotSink* sink : sinks_) sink->stop();
+  end_ns = phases.end(io::Phase::kHandoff);
+  t.compute_ns = end_ns - t.wake_ns;
+  const OverrunDecision decision =
+      decide(overrun_, t.deadline_ns, end_ns, period_ns_, consecutive_misses_);
+  consecutive_misses_ = decision.consecutive_misses;
+  t.deadline_miss = decision.miss();
+  t.consecutive_misses = decision.consecutive_misses;
+  if (slot != nullptr) {
+    slot->timing = t;
+    handoff_.commit();
+  }
+  return decision;
+}
+
+/// Statistics and the overrun log line (no I/O: the log is a ring).
+void Executive::record(const io::CycleTiming& t, const OverrunDecision& decision,
+                       std::int64_t end_ns) noexcept {
+  lateness_.add(t.lateness_ns);
+  compute_.add(t.compute_ns);
+  for (std::size_t p = 0; p < io::kPhaseCount; ++p) phases_[p].add(t.phase_ns[p]);
+  sim_time_s_.store(t.sim_time_s, std::memory_order_relaxed);
+  loop_time_s_.store(static_cast<double>(end_ns - start_ns_) * 1e-9, std::memory_order_relaxed);
+  if (!decision.miss()) return;
+  misses_.fetch_add(1, std::memory_order_relaxed);
+  skipped_.fetch_add(static_cast<std::uint64_t>(decision.skipped_periods),
+                     std::memory_order_relaxed);
+  std::array<char, 24> action{};
+  format_action(decision, action);
+  log_.miss(clock_.realtime_ns(), end_ns, t, action.data());
+}
+
+void Executive::finish(StopReason reason) noexcept {
+  reason_ = reason;
+  handoff_.close();
+  finished_event_.notify();
+}
+
+void Executive::apply_rt_settings() {
+  // The outcome goes into info_ before rt_ready_; the caller warns once.
+  std::string problems;
+  const auto note = [&problems](const rt::SetupResult& r) {
+    if (r.ok) return;
+    problems += problems.empty() ? "" : "; ";
+    problems += r.message;
+  };
+  note(rt::set_timer_slack(1));
+  if (!params_.offline) {
+    const rt::SetupResult fifo = rt::set_sched_fifo(params_.priority);
+    info_.sched_fifo = fifo.ok;
+    if (fifo.ok) info_.priority = params_.priority;
+    note(fifo);
+  }
+  if (params_.cpu >= 0) {
+    const rt::SetupResult pinned = rt::set_cpu_affinity(params_.cpu);
+    if (pinned.ok) info_.cpu = params_.cpu;
+    note(pinned);
+  }
+  if (!rt_problems_.empty() && !problems.empty()) rt_problems_ += "; ";
+  rt_problems_ += problems;
 }
 
 void Executive::loop_thread_main() {
-  // RT settings of this thread; the outcome goes into info_ before rt_ready_.
-  prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
-  if (!params_.offline) {
-    sched_param sp{};
-    sp.sched_priority = params_.priority;
-    if (pthread_setschedparam(pthread_self(), SCHED_FIFO, &sp) == 0) {
-      info_.sched_fifo = true;
-      info_.priority = params_.priority;
-    }
-  }
-  if (params_.cpu >= 0) {
-    cpu_set_t set;
-    CPU_ZERO(&set);
-    CPU_SET(static_cast<std::size_t>(params_.cpu), &set);
-    if (pthread_setaffinity_np(pthread_self(), sizeof set, &set) == 0) info_.cpu = params_.cpu;
-  }
+  apply_rt_settings();
   rt_ready_.store(true, std::memory_order_release);
-  while (!go_.load(std::memory_order_acquire))
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  rt_ready_.notify_all();
+  go_.wait(false, std::memory_order_acquire);
   if (stop_requested_.load()) {
-    reason_ = StopReason::kRequested;
-    finished_.store(true, std::memory_order_release);
+    finish(StopReason::kRequested);
     return;
   }
   run_loop();
@@ -254,20 +236,26 @@ void Executive::loop_thread_main() {
 
 io::RunInfo Executive::prepare(const std::string& config_file) {
   info_.config_file = config_file;
-  if (!params_.offline) info_.memory_locked = mlockall(MCL_CURRENT | MCL_FUTURE) == 0;
-  for (io::SnapshotSink* sink : sinks_) sink->start(info_);
+  if (!params_.offline) {
+    const rt::SetupResult locked = rt::lock_memory();
+    info_.memory_locked = locked.ok;
+    rt_problems_ = locked.message;
+  }
+  dispatcher_.start_sinks(info_);
   loop_thread_ = std::thread([this] { loop_thread_main(); });
-  while (!rt_ready_.load(std::memory_order_acquire))
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
-  dispatcher_ = std::thread([this] { dispatcher_main(); });
+  rt_ready_.wait(false, std::memory_order_acquire);
+  dispatcher_.start();
   return info_;
 }
 
-void Executive::go() { go_.store(true, std::memory_order_release); }
+void Executive::go() {
+  go_.store(true, std::memory_order_release);
+  go_.notify_all();
+}
 
 StopReason Executive::join() {
   if (loop_thread_.joinable()) loop_thread_.join();
-  if (dispatcher_.joinable()) dispatcher_.join();
+  dispatcher_.join();
   return reason_;
 }
 

@@ -1,28 +1,32 @@
 #pragma once
 /// @file
-/// The real-time executive: a loop thread that every period runs the phases inputs (CycleIo),
-/// driver, model step, outputs (CycleIo) and handoff (a snapshot into a lock-free ring), measures
-/// each cycle, applies the overrun policy and logs misses; plus a non-RT dispatcher thread that
-/// feeds the snapshot sinks. Statistics are fixed-bucket histograms updated on the loop thread
-/// (a few adds per cycle, no I/O) so that dropped snapshots never bias them.
+/// The real-time executive: a loop thread that every period runs the named phases inputs
+/// (CycleIo), driver, model step, outputs (CycleIo) and handoff (a snapshot into a lock-free
+/// ring), makes one overrun decision per cycle (rig/overrun_policy) and logs misses; the
+/// dispatcher thread (rig/dispatcher) feeds the snapshot sinks. Statistics are fixed-bucket
+/// histograms updated on the loop thread (a few adds per cycle, no I/O) so that dropped
+/// snapshots never bias them.
 
+#include <array>
 #include <atomic>
 #include <cstdint>
-#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "io/cycle_io.h"
-#include "io/log/event_log.h"
 #include "io/snapshot.h"
 #include "io/snapshot_sink.h"
 #include "model/stepped_model.h"
-#include "rig/clock.h"
-#include "rig/config.h"
+#include "rig/dispatcher.h"
 #include "rig/driver/driver.h"
-#include "rig/log_histogram.h"
-#include "rig/spsc_ring.h"
+#include "rig/event_log.h"
+#include "rig/overrun_policy.h"
+#include "rig/phase_timer.h"
+#include "rig/rt/clock.h"
+#include "rig/rt/event_count.h"
+#include "rig/rt/log_histogram.h"
+#include "rig/snapshot_handoff.h"
 
 namespace rig {
 
@@ -51,12 +55,13 @@ class CycleHook {
 
 class Executive {
  public:
-  /// Every pointer must outlive the executive; `driver` may be null. `routing` sets the sources
-  /// of the input signals. Allocates everything here.
-  Executive(const ExecutiveParams& params, Clock& clock, model::SteppedModel& model,
+  using Sources = std::array<model::SignalSource, model::kSignalCount>;
+
+  /// Every pointer must outlive the executive; `driver` may be null. `sources` (rig/routing) is
+  /// published with every snapshot; nothing on the loop decides by it. Allocates everything here.
+  Executive(const ExecutiveParams& params, rt::Clock& clock, model::SteppedModel& model,
             driver::Driver* driver, std::vector<io::CycleIo*> io,
-            std::vector<io::SnapshotSink*> sinks, io::log::EventLog& log,
-            const std::array<model::SignalSource, model::kSignalCount>& routing);
+            std::vector<io::SnapshotSink*> sinks, EventLog& log, const Sources& sources);
   ~Executive();
   Executive(const Executive&) = delete;
   Executive& operator=(const Executive&) = delete;
@@ -65,21 +70,23 @@ class Executive {
   /// with a fake clock; snapshots are drained by drain_snapshots()).
   StopReason run_loop();
 
-  /// Applies mlockall, starts the dispatcher and the loop thread (SCHED_FIFO, affinity, timer
-  /// slack 1 ns). The loop waits until go() (so that READY and the RT events come first).
-  /// Returns what was granted.
+  /// Applies mlockall, starts the sinks, the loop thread (SCHED_FIFO, affinity, timer slack
+  /// 1 ns) and the dispatcher. The loop waits until go() (so that READY and the RT events come
+  /// first). Returns what was granted; rt_problems() says why not.
   io::RunInfo prepare(const std::string& config_file);
   void go();
   /// Waits for the loop and the dispatcher to finish; sinks are stopped.
   StopReason join();
   /// Async-signal-safe.
-  void request_stop() noexcept { stop_requested_.store(true, std::memory_order_relaxed); }
-  [[nodiscard]] bool finished() const noexcept { return finished_.load(std::memory_order_acquire); }
+  void request_stop() noexcept;
+  [[nodiscard]] bool finished() const noexcept { return handoff_.closed(); }
+  /// Sleeps until the loop has finished, at most `timeout_ns` (the supervisor's wait).
+  void wait_finished(std::int64_t timeout_ns) noexcept;
 
   void set_hook(CycleHook* hook) noexcept { hook_ = hook; }
 
-  /// Drains the snapshot ring into the sinks (dispatcher body); returns how many it consumed.
-  std::size_t drain_snapshots();
+  /// Drains the snapshot ring into the sinks on the calling thread; returns how many.
+  std::size_t drain_snapshots() { return dispatcher_.drain_snapshots(); }
 
   // ---- statistics (readable from any thread; exact once the loop has stopped) ----
   [[nodiscard]] std::uint64_t cycles() const noexcept {
@@ -91,9 +98,7 @@ class Executive {
   [[nodiscard]] std::uint64_t skipped_periods() const noexcept {
     return skipped_.load(std::memory_order_relaxed);
   }
-  [[nodiscard]] std::uint64_t snapshots_dropped() const noexcept {
-    return dropped_.load(std::memory_order_relaxed);
-  }
+  [[nodiscard]] std::uint64_t snapshots_dropped() const noexcept { return handoff_.dropped(); }
   [[nodiscard]] double sim_time_s() const noexcept {
     return sim_time_s_.load(std::memory_order_relaxed);
   }
@@ -101,53 +106,67 @@ class Executive {
   [[nodiscard]] double loop_time_s() const noexcept {
     return loop_time_s_.load(std::memory_order_relaxed);
   }
-  [[nodiscard]] const LogHistogram& lateness() const noexcept { return lateness_; }
-  [[nodiscard]] const LogHistogram& compute() const noexcept { return compute_; }
-  [[nodiscard]] const LogHistogram& phase(io::Phase p) const noexcept {
-    return phases_[static_cast<std::size_t>(p)];
+  [[nodiscard]] const rt::LogHistogram& lateness() const noexcept { return lateness_; }
+  [[nodiscard]] const rt::LogHistogram& compute() const noexcept { return compute_; }
+  [[nodiscard]] const rt::LogHistogram& phase(io::Phase p) const noexcept {
+    return phases_[io::index(p)];
   }
-  [[nodiscard]] const model::Signals& signals() const noexcept {
-    return signals_;
-  }  ///< after the loop stopped
-  [[nodiscard]] io::IoCounters can_counters() const noexcept;
+  /// After the loop stopped.
+  [[nodiscard]] const model::Signals& signals() const noexcept { return signals_; }
+  /// The counters of every I/O adapter, summed (io/io_counters.h).
+  [[nodiscard]] io::IoCounters io_counters() const noexcept {
+    io::IoCounters sum{};
+    read_io_counters(sum);
+    return sum;
+  }
   [[nodiscard]] const io::RunInfo& run_info() const noexcept { return info_; }
+  /// Why RT settings were refused ("" if all were granted), after prepare().
+  [[nodiscard]] const std::string& rt_problems() const noexcept { return rt_problems_; }
 
  private:
+  struct LoopState;
+  StopReason cycle(LoopState& loop) noexcept;
+  OverrunDecision handoff(io::CycleTiming& timing, PhaseTimer& phases,
+                          std::int64_t& end_ns) noexcept;
+  void record(const io::CycleTiming& timing, const OverrunDecision& decision,
+              std::int64_t end_ns) noexcept;
+  void finish(StopReason reason) noexcept;
+  void read_io_counters(io::IoCounters& sum) const noexcept;
   void loop_thread_main();
-  void dispatcher_main();
-  void handoff(const io::CycleTiming& timing, std::int64_t& handoff_end_ns) noexcept;
+  void apply_rt_settings();
 
   ExecutiveParams params_;
-  Clock& clock_;
+  OverrunConfig overrun_;
+  std::int64_t period_ns_;
+  rt::Clock& clock_;
   model::SteppedModel& model_;
   driver::Driver* driver_;
   std::vector<io::CycleIo*> io_;
-  std::vector<io::SnapshotSink*> sinks_;
-  io::log::EventLog& log_;
+  EventLog& log_;
   CycleHook* hook_ = nullptr;
 
   model::Signals signals_{};
-  SpscRing<io::Snapshot> ring_;
-  std::uint64_t dropped_since_consume_ = 0;  // dispatcher side
-  std::uint64_t dropped_seen_ = 0;           // dispatcher side
+  SnapshotHandoff handoff_;
+  Dispatcher dispatcher_;
+  std::uint32_t consecutive_misses_ = 0;  // loop thread
+  std::int64_t start_ns_ = 0;             // loop thread
 
-  LogHistogram lateness_;
-  LogHistogram compute_;
-  std::array<LogHistogram, io::kPhaseCount> phases_;
+  rt::LogHistogram lateness_;
+  rt::LogHistogram compute_;
+  std::array<rt::LogHistogram, io::kPhaseCount> phases_;
   std::atomic<std::uint64_t> cycles_{0};
   std::atomic<std::uint64_t> misses_{0};
   std::atomic<std::uint64_t> skipped_{0};
-  std::atomic<std::uint64_t> dropped_{0};
   std::atomic<double> sim_time_s_{0};
   std::atomic<double> loop_time_s_{0};
 
   io::RunInfo info_;
+  std::string rt_problems_;
   std::thread loop_thread_;
-  std::thread dispatcher_;
   std::atomic<bool> stop_requested_{false};
   std::atomic<bool> go_{false};
   std::atomic<bool> rt_ready_{false};
-  std::atomic<bool> finished_{false};
+  rt::EventCount finished_event_;
   StopReason reason_ = StopReason::kNone;
 };
 

@@ -10,12 +10,6 @@
 namespace rig {
 namespace {
 
-/// The routing decision for the assist: the ECU's torque when [routing] sends it from CAN, else
-/// the built-in boost curve.
-bool assist_from_input(const RigConfig& config) {
-  return config.routing[model::index(model::Signal::kAssistTorque)] == model::SignalSource::kCan;
-}
-
 /// A VehicleModel at step h, at rest or at the initial speed.
 std::unique_ptr<model::SteppedModel> make_vehicle_model(
     const io::config::VehicleModelSettings& settings, bool assist_input, double step_s) {
@@ -46,11 +40,11 @@ std::unique_ptr<model::SteppedModel> make_combination_model(
 
 std::unique_ptr<model::SteppedModel> make_model(const RigConfig& config) {
   if (config.model.kind == "vehicle") {
-    return make_vehicle_model(*config.model.vehicle, assist_from_input(config),
+    return make_vehicle_model(*config.model.vehicle, config.routing.assist_from_input,
                               config.rig.period_s);
   }
   if (config.model.kind == "combination") {
-    return make_combination_model(*config.model.combination, assist_from_input(config),
+    return make_combination_model(*config.model.combination, config.routing.assist_from_input,
                                   config.rig.period_s);
   }
   // kind is validated at load time; the rest is "quarter-car".
@@ -59,8 +53,9 @@ std::unique_ptr<model::SteppedModel> make_model(const RigConfig& config) {
 }
 
 std::unique_ptr<driver::Driver> make_driver(const RigConfig& config) {
-  if (config.path_driver) return std::make_unique<driver::PathDriver>(*config.path_driver);
-  if (config.driver) return std::make_unique<driver::TableDriver>(*config.driver);
+  const io::InputSet& feeds = config.routing.driver_inputs;
+  if (config.path_driver) return std::make_unique<driver::PathDriver>(*config.path_driver, feeds);
+  if (config.driver) return std::make_unique<driver::TableDriver>(*config.driver, feeds);
   return nullptr;
 }
 

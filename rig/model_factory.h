@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// Builds the model named by [model] kind and the driver of [driver]. The executive only sees
+/// Builds the model named by [model] kind and the driver of [driver], each handed its part of
+/// the routing (config.routing: the assist choice, the driver's inputs). The executive only sees
 /// model::SteppedModel and driver::Driver.
 
 #include <memory>

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// `rig run`: loads the configuration, builds model/driver/io/sinks, runs the executive with
-/// signal handling, systemd notification, periodic status and the final summary.
+/// `rig run`: assembly (rig/run_assembly), real-time start (rig/run_start), supervision
+/// (rig/run_supervision) and finish (rig/run_finish), with signal handling.
 
 #include "rig/config.h"
 #include "rig/run_options.h"

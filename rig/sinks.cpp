@@ -12,7 +12,7 @@ std::vector<std::unique_ptr<io::CycleIo>> make_io(const RigConfig& config,
   if (config.can.has_value() && options.can != "none") {
     io::can::bridge::CanSettings can = *config.can;
     if (!options.can.empty()) can.interface = options.can;
-    io.push_back(io::can::bridge::make_can_io(can));
+    io.push_back(io::can::bridge::make_can_io(can, config.routing.can_inputs));
   }
   return io;
 }

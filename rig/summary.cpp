@@ -15,13 +15,13 @@ std::string fmt(const char* format, auto... args) {
 long long ll(std::int64_t v) { return static_cast<long long>(v); }
 unsigned long long ull(std::uint64_t v) { return static_cast<unsigned long long>(v); }
 
-std::string quantiles_json(const LogHistogram& h) {
+std::string quantiles_json(const rt::LogHistogram& h) {
   return fmt("{\"p50\":%lld,\"p99\":%lld,\"p999\":%lld,\"max\":%lld,\"count\":%llu}",
              ll(h.quantile(0.5)), ll(h.quantile(0.99)), ll(h.quantile(0.999)), ll(h.max()),
              ull(h.count()));
 }
 
-std::string bins_json(const LogHistogram& h) {
+std::string bins_json(const rt::LogHistogram& h) {
   std::string out = "[";
   bool first = true;
   for (const auto& b : h.bins()) {
@@ -45,7 +45,7 @@ const char* bus_state_name(io::BusState s) {
 }
 
 /// A decade histogram for humans: counts in [1, 10) us, [10, 100) us, ...
-std::string decades(const LogHistogram& h) {
+std::string decades(const rt::LogHistogram& h) {
   std::string out;
   std::array<std::uint64_t, 8> counts{};  // <1us, 1-10us, ..., >=1s
   for (const auto& b : h.bins()) {
@@ -110,10 +110,9 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
            info.offline ? "true" : "false");
   j += "  \"lateness_ns\": " + quantiles_json(e.lateness()) + ",\n";
   j += "  \"compute_ns\": " + quantiles_json(e.compute()) + ",\n";
-  static constexpr const char* kPhases[] = {"inputs", "driver", "model", "outputs", "handoff"};
   j += "  \"phase_ns\": {";
   for (std::size_t p = 0; p < io::kPhaseCount; ++p) {
-    j += fmt("%s\"%s\": ", p == 0 ? "" : ", ", kPhases[p]) +
+    j += fmt("%s\"%s\": ", p == 0 ? "" : ", ", io::kPhaseNames[p]) +
          quantiles_json(e.phase(static_cast<io::Phase>(p)));
   }
   j += "},\n";
@@ -127,7 +126,7 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
   j += fmt(
       "  \"skipped_periods\": %llu,\n  \"snapshots_dropped\": %llu,\n  \"events_lost\": %llu,\n",
       ull(e.skipped_periods()), ull(e.snapshots_dropped()), ull(x.events_lost));
-  const io::IoCounters c = e.can_counters();
+  const io::IoCounters c = e.io_counters();
   j +=
       fmt("  \"can\": {\"bus_state\": \"%s\", \"frames_received\": %llu, \"frames_sent\": %llu, "
           "\"rx_overflows\": %llu, \"timeouts\": %llu, "

@@ -2,6 +2,7 @@
 /// @file
 /// The driver phase of a cycle: fills the inputs that no ECU provides.
 
+#include "io/cycle_io.h"
 #include "model/signals.h"
 
 namespace rig::driver {
@@ -10,14 +11,21 @@ namespace rig::driver {
 /// RT thread after the inputs phase: no allocation, no blocking, no exceptions.
 class Driver {
  public:
-  Driver() = default;
+  /// `feeds`: the inputs this driver writes (the routing's decision, rig/routing.h).
+  explicit Driver(const io::InputSet& feeds) : feeds_(feeds) {}
   Driver(const Driver&) = delete;
   Driver& operator=(const Driver&) = delete;
   virtual ~Driver() = default;
 
-  /// Writes every input whose source is SignalSource::kDriver, from the simulated time and the
-  /// outputs of the previous step (already in `signals`). Leaves kCan inputs untouched.
+  /// Writes the inputs it feeds, from the simulated time and the outputs of the previous step
+  /// (already in `signals`). Leaves every other input untouched.
   virtual void update(double sim_time_s, model::Signals& signals) noexcept = 0;
+
+ protected:
+  [[nodiscard]] bool feeds(model::Signal s) const noexcept { return feeds_[model::index(s)]; }
+
+ private:
+  io::InputSet feeds_;
 };
 
 }  // namespace rig::driver

@@ -8,7 +8,15 @@
 namespace rig::driver {
 
 using model::Signal;
-using model::SignalSource;
+
+io::InputSet path_driver_inputs() {
+  io::InputSet inputs;
+  for (const Signal s :
+       {Signal::kSteeringWheelAngleCmd, Signal::kThrottlePedal, Signal::kBrakePressureFront,
+        Signal::kBrakePressureRear, Signal::kGearRequest})
+    inputs.set(model::index(s));
+  return inputs;
+}
 
 std::vector<PathPoint> iso3888_1_centreline(double start_x_m, double lane_offset_m) {
   // section lengths: 1 lane 15 m, 2 change 30 m, 3 offset lane 25 m, 4 change 25 m, 5 lane 15 m
@@ -56,7 +64,8 @@ PathDriverParams read_path_driver(io::config::StrictTable& t, const PathDriverVe
   return p;
 }
 
-PathDriver::PathDriver(PathDriverParams params) : p_(std::move(params)) {}
+PathDriver::PathDriver(PathDriverParams params, const io::InputSet& feeds)
+    : Driver(feeds), p_(std::move(params)) {}
 
 double PathDriver::path_y(double x) const noexcept {
   const auto& path = p_.path;
@@ -76,7 +85,6 @@ void PathDriver::update(double t, model::Signals& s) noexcept {
   const double v = s[Signal::kVehicleSpeed];
   const double x = s[Signal::kPositionX], y = s[Signal::kPositionY], psi = s[Signal::kHeading];
   lateral_offset_m_ = y - path_y(x);
-  const auto mine = [&](Signal id) { return s.source[model::index(id)] == SignalSource::kDriver; };
   // speed: PI on throttle, P on brake pressure
   const double err = p_.target_speed_mps - v;
   double throttle = 0, brake_front = 0, brake_rear = 0;
@@ -92,10 +100,10 @@ void PathDriver::update(double t, model::Signals& s) noexcept {
     brake_front = err < -1.0 ? p_.brake_gain_pa_per_mps * (-err - 1.0) : 0.0;
     brake_rear = 0.5 * brake_front;
   }
-  if (mine(Signal::kThrottlePedal)) s.set(Signal::kThrottlePedal, throttle);
-  if (mine(Signal::kBrakePressureFront)) s.set(Signal::kBrakePressureFront, brake_front);
-  if (mine(Signal::kBrakePressureRear)) s.set(Signal::kBrakePressureRear, brake_rear);
-  if (mine(Signal::kGearRequest)) s.set(Signal::kGearRequest, 99);
+  if (feeds(Signal::kThrottlePedal)) s.set(Signal::kThrottlePedal, throttle);
+  if (feeds(Signal::kBrakePressureFront)) s.set(Signal::kBrakePressureFront, brake_front);
+  if (feeds(Signal::kBrakePressureRear)) s.set(Signal::kBrakePressureRear, brake_rear);
+  if (feeds(Signal::kGearRequest)) s.set(Signal::kGearRequest, 99);
   // steering: pure pursuit towards the path point one preview distance ahead
   const double look = std::max(p_.preview_min_m, std::abs(v) * p_.preview_time_s);
   const double cx = std::cos(psi), sx = std::sin(psi);
@@ -105,7 +113,7 @@ void PathDriver::update(double t, model::Signals& s) noexcept {
   const double wheel = std::atan(2.0 * p_.wheelbase_m * lateral / (look * look));
   const double sw =
       std::clamp(p_.steering_ratio * wheel, -p_.max_steering_wheel_rad, p_.max_steering_wheel_rad);
-  if (mine(Signal::kSteeringWheelAngleCmd)) s.set(Signal::kSteeringWheelAngleCmd, sw);
+  if (feeds(Signal::kSteeringWheelAngleCmd)) s.set(Signal::kSteeringWheelAngleCmd, sw);
 }
 
 }  // namespace rig::driver

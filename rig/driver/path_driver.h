@@ -1,8 +1,9 @@
 #pragma once
 /// @file
 /// A closed-loop driver: a PI speed controller (throttle / brake pressure) plus a preview
-/// (pure-pursuit) path follower on the steering wheel angle. Writes only the inputs whose
-/// source is SignalSource::kDriver. Built at load time; update() never allocates.
+/// (pure-pursuit) path follower on the steering wheel angle. Writes only the inputs it was
+/// handed (path_driver_inputs() unless routed elsewhere). Built at load time; update() never
+/// allocates.
 ///
 /// Optional stop phase (the demo's brake-and-hold): from stop_time_s on the throttle is 0 and the
 /// brake circuit pressures ramp linearly to stop_brake_pressure_{front,rear}_pa over
@@ -59,9 +60,14 @@ PathDriverParams read_path_driver(io::config::StrictTable& driver_table,
 /// lane offset 3.5 m, smooth (cosine) transitions; starts at x = start_x_m.
 std::vector<PathPoint> iso3888_1_centreline(double start_x_m, double lane_offset_m = 3.5);
 
+/// What a path driver can write: the steering wheel angle, throttle, both brake circuits and
+/// the gear request.
+io::InputSet path_driver_inputs();
+
 class PathDriver final : public Driver {
  public:
-  explicit PathDriver(PathDriverParams params);
+  /// `feeds`: the inputs it writes (default: all it can).
+  explicit PathDriver(PathDriverParams params, const io::InputSet& feeds = path_driver_inputs());
   void update(double sim_time_s, model::Signals& signals) noexcept override;
   /// Lateral offset of the vehicle CG from the path at its x (last update) [m].
   [[nodiscard]] double lateral_offset_m() const noexcept { return lateral_offset_m_; }

@@ -62,7 +62,17 @@ TableDriverParams read_table_driver(io::config::StrictTable& t) {
 
 namespace rig::driver {
 
-TableDriver::TableDriver(TableDriverParams params) : params_(std::move(params)) {}
+io::InputSet table_driver_inputs(const TableDriverParams& params) {
+  io::InputSet inputs;
+  for (const model::Signal s : params.columns) inputs.set(model::index(s));
+  return inputs;
+}
+
+TableDriver::TableDriver(TableDriverParams params)
+    : Driver(table_driver_inputs(params)), params_(std::move(params)) {}
+
+TableDriver::TableDriver(TableDriverParams params, const io::InputSet& feeds)
+    : Driver(feeds), params_(std::move(params)) {}
 
 void TableDriver::update(double sim_time_s, model::Signals& signals) noexcept {
   const auto& times = params_.times_s;
@@ -76,7 +86,7 @@ void TableDriver::update(double sim_time_s, model::Signals& signals) noexcept {
   }
   for (std::size_t c = 0; c < n_cols; ++c) {
     const model::Signal s = params_.columns[c];
-    if (signals.source[model::index(s)] != model::SignalSource::kDriver) continue;
+    if (!feeds(s)) continue;
     const double a = params_.values[i * n_cols + c];
     const double b = w > 0.0 ? params_.values[(i + 1) * n_cols + c] : a;
     signals.set(s, a + w * (b - a));

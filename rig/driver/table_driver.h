@@ -21,10 +21,15 @@ struct TableDriverParams {
 /// Throws ConfigError(file:line) on unknown names, non-input signals, ragged or unsorted rows.
 TableDriverParams read_table_driver(io::config::StrictTable& driver_table);
 
+/// What a table driver can write: its columns.
+io::InputSet table_driver_inputs(const TableDriverParams& params);
+
 class TableDriver final : public Driver {
  public:
+  /// `feeds`: the inputs it writes (default: all its columns).
   explicit TableDriver(TableDriverParams params);
-  /// Writes each column whose source is kDriver; O(log rows), no allocation.
+  TableDriver(TableDriverParams params, const io::InputSet& feeds);
+  /// Writes each column it feeds; O(log rows), no allocation.
   void update(double sim_time_s, model::Signals& signals) noexcept override;
 
  private:

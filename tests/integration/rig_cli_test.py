@@ -1,14 +1,15 @@
 #!/usr/bin/python3
 """End-to-end tests of the `rig` executable: rig_cli_test.py RIG_BINARY SOURCE_DIR CASE.
 
-Cases: offline, realtime, sigterm, notify, badconfig, usage. No absolute timing is asserted
-(except that a 50 ms injected stall produces a gap in the watchdog pings)."""
+Cases: offline, offline_complete, realtime, sigterm, notify, badconfig, usage. No absolute
+timing is asserted (except that a 50 ms injected stall produces a gap in the watchdog pings)."""
 
 import json
 import os
 import re
 import signal
 import socket
+import struct
 import subprocess
 import sys
 import tempfile
@@ -73,6 +74,33 @@ def case_offline():
         events = [{k: e[k] for k in e if k not in ("time", "monotonic_ns")} for e in read_log(log)]
         outs.append((s, events))
     check(outs[0] == outs[1], "two offline runs differ")
+
+
+def lcm_channel_counts(path):
+    """Events per channel of an LCM event log (sync word, event number, timestamp, lengths)."""
+    data, pos, counts = open(path, "rb").read(), 0, {}
+    while pos < len(data):
+        sync, _, _, channel_len, data_len = struct.unpack_from(">IqqII", data, pos)
+        check(sync == 0xEDA1DA01, f"bad LCM sync word at byte {pos}")
+        pos += 28
+        channel = data[pos:pos + channel_len].decode()
+        counts[channel] = counts.get(channel, 0) + 1
+        pos += channel_len + data_len
+    return counts
+
+
+def case_offline_complete():
+    # An offline run ends once its last snapshot is written: every cycle is in the LCM log, for
+    # runs shorter than half the snapshot ring, about one ring, and several rings.
+    for steps in (1, 10, 300, 1000):
+        log, sj = f"{TMP}/c{steps}.lcm", f"{TMP}/c{steps}.json"
+        r = run(["run", "--config", CONFIG, "--offline", "--duration", str(steps / 1000),
+                 "--lcm-url", "none", "--lcm-log", log, "--summary-json", sj])
+        check(r.returncode == 0, f"{steps} steps: exit {r.returncode}: {r.stderr}")
+        s = json.load(open(sj))
+        check(s["cycles"] == steps and s["snapshots_dropped"] == 0, f"{steps} steps: {s['cycles']}")
+        state = lcm_channel_counts(log).get("RIG_STATE", 0)
+        check(state == steps, f"{steps} steps: {state} RIG_STATE events in the LCM log")
 
 
 def case_realtime():
@@ -174,6 +202,6 @@ def case_usage():
     check(r.returncode == 0, f"check of the default config: {r.stderr}")
 
 
-{"offline": case_offline, "realtime": case_realtime, "sigterm": case_sigterm, "notify": case_notify,
+{"offline": case_offline, "offline_complete": case_offline_complete, "realtime": case_realtime, "sigterm": case_sigterm, "notify": case_notify,
  "badconfig": case_badconfig, "usage": case_usage}[CASE]()
 print("PASS", CASE)

@@ -1,4 +1,5 @@
-/// Executive, statistics, ring, table driver and configuration tests (fake clock, no sleeping).
+/// Executive, statistics, event log, table driver and configuration tests (fake clock, no
+/// sleeping).
 
 #include <gtest/gtest.h>
 
@@ -10,13 +11,12 @@
 #include <string>
 
 #include "io/config/config_error.h"
-#include "io/log/event_log.h"
 #include "rig/config.h"
 #include "rig/driver/table_driver.h"
+#include "rig/event_log.h"
 #include "rig/executive.h"
-#include "rig/log_histogram.h"
 #include "rig/model_factory.h"
-#include "rig/spsc_ring.h"
+#include "tests/rig/fake_clock.h"
 #include "tests/rig/test_model.h"
 #include "tests/support/alloc_counter.h"
 
@@ -24,24 +24,7 @@ namespace rig {
 namespace {
 
 using model::Signal;
-
-/// A scripted clock: sleeping jumps to the deadline plus a per-cycle wake-up lateness; compute
-/// time is charged explicitly with advance().
-class FakeClock final : public Clock {
- public:
-  std::int64_t now_ns() noexcept override { return now_; }
-  void sleep_until(std::int64_t deadline) noexcept override {
-    if (deadline > now_) now_ = deadline;
-    now_ += next_wake_lateness_ns;
-    next_wake_lateness_ns = 0;
-  }
-  std::int64_t realtime_ns() noexcept override { return now_; }
-  void advance(std::int64_t ns) { now_ += ns; }
-  std::int64_t next_wake_lateness_ns = 0;
-
- private:
-  std::int64_t now_ = 1'000'000'000;
-};
+using test::FakeClock;
 
 std::string read_file(const std::filesystem::path& p) {
   std::ifstream in(p);
@@ -56,57 +39,12 @@ std::filesystem::path temp_path(const std::string& name) {
 struct Harness {
   explicit Harness(ExecutiveParams p, std::string log_path = "")
       : model(p.period_s), log(log_path), exec(p, clock, model, nullptr, {}, {}, log, routing()) {}
-  static std::array<model::SignalSource, model::kSignalCount> routing() {
-    std::array<model::SignalSource, model::kSignalCount> r{};
-    return r;
-  }
+  static Executive::Sources routing() { return {}; }
   FakeClock clock;
   test::OscillatorModel model;
-  io::log::EventLog log;
+  EventLog log;
   Executive exec;
 };
-
-// ---- LogHistogram ----
-TEST(LogHistogram, BucketsAreContiguousAndOrdered) {
-  for (int b = 0; b + 1 < LogHistogram::kBuckets; ++b) {
-    EXPECT_EQ(LogHistogram::bucket_high(b) + 1, LogHistogram::bucket_low(b + 1)) << b;
-    EXPECT_EQ(LogHistogram::bucket_of(LogHistogram::bucket_low(b)), b);
-    EXPECT_EQ(LogHistogram::bucket_of(LogHistogram::bucket_high(b)), b);
-  }
-  // 16 sub-buckets per octave: 1000 ns lies in [992, 1023] (octave 512..1023, width 32).
-  EXPECT_EQ(LogHistogram::bucket_low(LogHistogram::bucket_of(1000)), 992);
-  EXPECT_EQ(LogHistogram::bucket_high(LogHistogram::bucket_of(1000)), 1023);
-}
-
-TEST(LogHistogram, QuantilesOfHandMadeData) {
-  LogHistogram h;
-  EXPECT_EQ(h.quantile(0.5), 0);
-  // 990 values of 10 ns (exact buckets below 16 ns), 9 of 1000 ns, 1 of 5'000'000 ns.
-  for (int i = 0; i < 990; ++i) h.add(10);
-  for (int i = 0; i < 9; ++i) h.add(1000);
-  h.add(5'000'000);
-  EXPECT_EQ(h.count(), 1000u);
-  EXPECT_EQ(h.quantile(0.5), 10);
-  EXPECT_EQ(h.quantile(0.99), 10);        // rank 990 is still a 10
-  EXPECT_EQ(h.quantile(0.999), 1023);     // rank 999: bucket [992, 1023]
-  EXPECT_EQ(h.quantile(1.0), 5'000'000);  // capped at the exact max
-  EXPECT_EQ(h.max(), 5'000'000);
-  h.add(-5);  // negative lateness counts as 0
-  EXPECT_EQ(h.bucket_count(0), 1u);
-}
-
-// ---- SpscRing ----
-TEST(SpscRing, FullRingRefusesAndOrderIsKept) {
-  SpscRing<int> ring(4);
-  for (int i = 0; i < 4; ++i) EXPECT_TRUE(ring.push(i));
-  EXPECT_FALSE(ring.push(99));
-  for (int i = 0; i < 4; ++i) {
-    ASSERT_NE(ring.front(), nullptr);
-    EXPECT_EQ(*ring.front(), i);
-    ring.release();
-  }
-  EXPECT_EQ(ring.front(), nullptr);
-}
 
 // ---- Executive with a fake clock ----
 TEST(Executive, CountsCyclesAndStatisticsWithoutMisses) {
@@ -147,7 +85,6 @@ TEST(Executive, SkipDropsMissedPeriodsAndStaysPhaseAligned) {
   const auto log_path = temp_path("skip.jsonl");
   {
     Harness hx(p, log_path.string());
-    hx.log.start();
     // Cycle 10's step takes 3.5 ms: its work ends 3.5 ms after its deadline -> miss; the next
     // deadlines at +1, +2, +3 ms have passed, so 3 periods are skipped and cycle 11 aims at +4 ms.
     hx.model.on_step = [&](std::uint64_t n) { hx.clock.advance(n == 10 ? 3'500'000 : 100'000); };
@@ -225,8 +162,8 @@ TEST(Executive, RequestStopEndsTheLoop) {
 TEST(EventLog, OverflowWritesTheLostCount) {
   const auto log_path = temp_path("overflow.jsonl");
   {
-    io::log::EventLog log(log_path.string(), 8);
-    for (int i = 0; i < 20; ++i) log.event(0, i, "e", "x");  // writer not started: 12 lost
+    EventLog log(log_path.string(), 8);
+    for (int i = 0; i < 20; ++i) log.event(0, i, "e", "x");  // not drained: 12 lost
     EXPECT_EQ(log.lost(), 12u);
     log.stop();
   }
@@ -241,10 +178,10 @@ TEST(TableDriver, InterpolatesLinearlyAndHoldsEnds) {
   p.columns = {Signal::kThrottlePedal, Signal::kBrakePressureFront};
   p.times_s = {1.0, 2.0, 4.0};
   p.values = {0.0, 0.0, 1.0, 10.0, 0.5, 30.0};
-  driver::TableDriver d(p);
+  io::InputSet feeds;  // the routing sends the brake pressure from CAN: not the table's
+  feeds.set(model::index(Signal::kThrottlePedal));
+  driver::TableDriver d(p, feeds);
   model::Signals s;
-  s.source[model::index(Signal::kThrottlePedal)] = model::SignalSource::kDriver;
-  s.source[model::index(Signal::kBrakePressureFront)] = model::SignalSource::kCan;  // not ours
   s[Signal::kBrakePressureFront] = -7.0;
   d.update(0.0, s);
   EXPECT_DOUBLE_EQ(s[Signal::kThrottlePedal], 0.0);
@@ -304,9 +241,8 @@ TEST(Config, PaperQuarterCarConfigReproducesThePaperManeuver) {
   EXPECT_DOUBLE_EQ(c.rig.period_s, 0.001);
   EXPECT_DOUBLE_EQ(c.model.quarter_car.grade, 0.10);
   ASSERT_TRUE(c.driver.has_value());
-  driver::TableDriver d(*c.driver);
+  driver::TableDriver d(*c.driver, c.routing.driver_inputs);
   model::Signals s;
-  s.source = c.routing;
   const auto torque = [&](double t) {
     d.update(t, s);
     return s[Signal::kThrottlePedal] * c.model.quarter_car.max_drive_torque_nm;
@@ -339,12 +275,12 @@ TEST(Config, DefaultConfigIsTheSedanDemoWithThePathDriver) {
   EXPECT_NEAR(c.path_driver->steering_ratio, 16.0, 1e-9);
   for (const Signal s : {Signal::kSteeringWheelAngleCmd, Signal::kThrottlePedal,
                          Signal::kBrakePressureFront, Signal::kBrakePressureRear})
-    EXPECT_EQ(c.routing[model::index(s)], model::SignalSource::kDriver) << model::info(s).name;
+    EXPECT_EQ(c.routing.source[model::index(s)], model::SignalSource::kDriver)
+        << model::info(s).name;
   // the stop phase: no throttle, pressures ramped over 0.5 s from 10.5 s and held
   auto d = make_driver(c);
   ASSERT_NE(d, nullptr);
   model::Signals s;
-  s.source = c.routing;
   s.set(Signal::kVehicleSpeed, 10.0);  // below the target: the speed controller pushes
   d->update(1.0, s);
   EXPECT_GT(s[Signal::kThrottlePedal], 0.5);
@@ -388,18 +324,17 @@ TEST(Executive, LoopThreadDoesNotAllocate) {
   auto model = make_model(config);  // the sedan demo: vehicle model + path driver
   auto driver = make_driver(config);
   ASSERT_NE(driver, nullptr);
-  VirtualClock clock;
-  io::log::EventLog log("");
+  rt::VirtualClock clock;
+  EventLog log("");
   CountingSink sink;
   ExecutiveParams p;
   p.offline = true;  // the same loop, no SCHED_FIFO needed in the test
   p.duration_s = 12.0;
   p.policy = OverrunPolicy::kSkip;
-  Executive exec(p, clock, *model, driver.get(), {}, {&sink}, log, config.routing);
+  Executive exec(p, clock, *model, driver.get(), {}, {&sink}, log, config.routing.source);
   AllocationProbe probe;
   exec.set_hook(&probe);
   exec.prepare("config/rig.toml");
-  log.start();
   exec.go();
   EXPECT_EQ(exec.join(), StopReason::kDuration);
   log.stop();

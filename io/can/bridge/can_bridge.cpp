@@ -22,11 +22,13 @@ can::transport::TransportSettings CanBridge::with_filter(can::transport::Transpo
 }
 
 CanBridge::CanBridge(can::mapping::CanConfig config,
-                     can::transport::TransportSettings transport_settings, bool kernel_filter)
+                     can::transport::TransportSettings transport_settings, bool kernel_filter,
+                     const io::InputSet& feeds)
     : config_(std::move(config)),
       rx_(config_),
       tx_(config_),
-      transport_(with_filter(std::move(transport_settings), config_, kernel_filter)) {}
+      transport_(with_filter(std::move(transport_settings), config_, kernel_filter)),
+      feeds_(feeds) {}
 
 void CanBridge::start(std::int64_t monotonic_ns) noexcept {
   rx_.reset(monotonic_ns, rx_signals_);
@@ -43,7 +45,7 @@ void CanBridge::receive(std::int64_t monotonic_ns, model::Signals& inputs) noexc
   });
   rx_.check_timeouts(monotonic_ns, rx_signals_, engine_counters_);
   for (std::size_t i = 0; i < model::index(model::kFirstOutput); ++i) {
-    if (inputs.source[i] != model::SignalSource::kCan) continue;
+    if (!feeds_[i]) continue;
     inputs.value[i] = rx_signals_.value[i];
     inputs.valid[i] = rx_signals_.valid[i];
   }

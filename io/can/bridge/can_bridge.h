@@ -4,7 +4,8 @@
 ///
 /// receive(): services the transport (ENOBUFS retries, reopen while down), drains every pending
 /// frame into can::mapping::RxProcessor (validation, decode, clamp, SI), applies timeouts (fallback
-/// + invalid), then copies the mapped inputs whose source is kCan into the model's inputs.
+/// + invalid), then copies the inputs it feeds (handed at construction by the rig's routing) into
+/// the model's inputs.
 /// transmit(): asks can::mapping::TxScheduler for the frames due now (phase grid of each
 /// GenMsgCycleTime, counter and checksum filled in) and sends them without blocking. Both are
 /// allocation-free, exception-free and non-blocking. Frame times given to the RX engine are the
@@ -26,9 +27,10 @@ class CanBridge final : public io::CycleIo {
  public:
   static constexpr std::size_t kMaxFramesPerCycle = 64;  ///< TX frames encoded per cycle
 
-  /// `transport_settings.filter_ids` are filled from the RX mapping if `kernel_filter`.
+  /// `transport_settings.filter_ids` are filled from the RX mapping if `kernel_filter`. `feeds`:
+  /// the model inputs this bridge writes (those routed to CAN).
   CanBridge(can::mapping::CanConfig config, can::transport::TransportSettings transport_settings,
-            bool kernel_filter);
+            bool kernel_filter, const io::InputSet& feeds);
 
   void receive(std::int64_t monotonic_ns, model::Signals& inputs) noexcept override;
   void transmit(std::int64_t monotonic_ns, const model::Signals& outputs) noexcept override;
@@ -49,8 +51,9 @@ class CanBridge final : public io::CycleIo {
   can::mapping::RxProcessor rx_;
   can::mapping::TxScheduler tx_;
   can::transport::SocketCanTransport transport_;
+  io::InputSet feeds_;
   bool started_ = false;
-  model::Signals rx_signals_{};  // what the RX engine writes; copied per input source
+  model::Signals rx_signals_{};  // what the RX engine writes; the fed inputs are copied out
   IoCounters engine_counters_{};
   std::array<can::mapping::TxFrame, kMaxFramesPerCycle> tx_frames_{};
 };

@@ -19,7 +19,7 @@ CanSettings read_can_settings(config::StrictTable& can_table) {
   return s;
 }
 
-std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings) {
+std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings, const io::InputSet& feeds) {
   can::mapping::CanConfig config;
   if (settings.dbc_file) {
     config.database = dbc::load_dbc(*settings.dbc_file);
@@ -35,7 +35,7 @@ std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings) {
   transport.interface = settings.interface;
   transport.fd = settings.fd;
   return std::make_unique<CanBridge>(std::move(config), std::move(transport),
-                                     settings.kernel_filter);
+                                     settings.kernel_filter, feeds);
 }
 
 }  // namespace rig::io::can::bridge

@@ -35,8 +35,9 @@ struct CanSettings {
 /// finish().
 CanSettings read_can_settings(config::StrictTable& can_table);
 
-/// Loads DBC and mapping, opens the transport. Throws config::ConfigError (bad DBC/mapping) or
-/// can::transport::TransportError (no SocketCAN, unknown interface), both with a clear message.
-std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings);
+/// Loads DBC and mapping, opens the transport; the bridge writes the inputs in `feeds` (those
+/// routed to CAN). Throws config::ConfigError (bad DBC/mapping) or can::transport::TransportError
+/// (no SocketCAN, unknown interface), both with a clear message.
+std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings, const io::InputSet& feeds);
 
 }  // namespace rig::io::can::bridge

@@ -4,10 +4,10 @@
 
 #include <benchmark/benchmark.h>
 
-#include "io/log/event_log.h"
-#include "rig/clock.h"
 #include "rig/driver/table_driver.h"
+#include "rig/event_log.h"
 #include "rig/executive.h"
+#include "rig/rt/clock.h"
 
 namespace {
 
@@ -33,18 +33,18 @@ void BM_ExecutiveCycle(benchmark::State& state) {
   table.columns = {rig::model::Signal::kThrottlePedal};
   table.times_s = {0.0, 1e6};
   table.values = {0.0, 1.0};
-  rig::driver::TableDriver driver(table);
-  std::array<rig::model::SignalSource, rig::model::kSignalCount> routing{};
-  routing[rig::model::index(rig::model::Signal::kThrottlePedal)] =
+  rig::driver::TableDriver driver(table);  // feeds its one column
+  rig::Executive::Sources sources{};
+  sources[rig::model::index(rig::model::Signal::kThrottlePedal)] =
       rig::model::SignalSource::kDriver;
-  rig::io::log::EventLog log("");
+  rig::EventLog log("");
   while (state.KeepRunningBatch(kBatch)) {
     state.PauseTiming();
     NullModel model;
-    rig::VirtualClock clock;
+    rig::rt::VirtualClock clock;
     rig::ExecutiveParams p;
     p.duration_s = static_cast<double>(kBatch) * 0.001;
-    rig::Executive exec(p, clock, model, &driver, {}, {}, log, routing);
+    rig::Executive exec(p, clock, model, &driver, {}, {}, log, sources);
     state.ResumeTiming();
     benchmark::DoNotOptimize(exec.run_loop());
     state.PauseTiming();

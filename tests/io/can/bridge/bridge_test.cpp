@@ -69,7 +69,7 @@ TEST(MakeCanIo, WithoutSocketCanFailsWithAClearTransportError) {
   const fs::path file =
       write_rig_toml("[can]\ninterface = \"vcan0\"\nmapping = \"steering-bench.toml\"\n");
   try {
-    (void)can::bridge::make_can_io(settings_from(file));
+    (void)can::bridge::make_can_io(settings_from(file), InputSet{});
     FAIL() << "expected can::transport::TransportError";
   } catch (const can::transport::TransportError& e) {
     EXPECT_NE(std::string(e.what()).find("--can none"), std::string::npos) << e.what();
@@ -81,7 +81,7 @@ TEST(MakeCanIo, OnVcanOpensTheBusAndReportsItUp) {
     GTEST_SKIP() << "needs AF_CAN and vcan0 (run via with-vcan)";
   const fs::path file = write_rig_toml(
       "[can]\ninterface = \"vcan0\"\nmapping = \"steering-bench.toml\"\nkernel_filter = true\n");
-  const auto io = can::bridge::make_can_io(settings_from(file));
+  const auto io = can::bridge::make_can_io(settings_from(file), InputSet{});
   ASSERT_NE(io, nullptr);
   IoCounters c;
   io->read_counters(c);

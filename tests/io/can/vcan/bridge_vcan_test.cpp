@@ -43,22 +43,25 @@ std::string out_dir() {
   return dir;
 }
 
+/// The inputs the bridge feeds (as the rig's routing would hand it for [routing] ... = "can").
+InputSet can_fed_inputs() {
+  InputSet fed;
+  for (Signal s : {Signal::kAssistTorque, Signal::kThrottlePedal, Signal::kBrakePressureFront,
+                   Signal::kBrakePressureRear}) {
+    fed.set(model::index(s));
+  }
+  return fed;
+}
+
 std::unique_ptr<can::bridge::CanBridge> make_bridge(const char* ifname,
                                                     bool kernel_filter = false) {
   can::transport::TransportSettings t;
   t.interface = ifname;
   return std::make_unique<can::bridge::CanBridge>(can::mapping::load_can_config(mapping_file()), t,
-                                                  kernel_filter);
+                                                  kernel_filter, can_fed_inputs());
 }
 
-model::Signals can_inputs() {
-  model::Signals in{};
-  for (Signal s : {Signal::kAssistTorque, Signal::kThrottlePedal, Signal::kBrakePressureFront,
-                   Signal::kBrakePressureRear}) {
-    in.source[model::index(s)] = model::SignalSource::kCan;
-  }
-  return in;
-}
+model::Signals can_inputs() { return model::Signals{}; }
 
 /// A 1 ms loop on the nominal grid t_k = t0 + k ms (absolute sleeps; after a stall it catches
 /// up without skipping cycles, as the rig's loop passes its nominal cycle time).

@@ -58,8 +58,12 @@ TEST(ClosedLoopVcan, AssistFromVirtualEcuLowersTorsionBarTorqueByTheBoostRatio) 
   can::transport::TransportSettings t1;
   t1.interface = "vcan1";
   const std::string mapping = src + "/config/can/steering-bench.toml";
-  can::bridge::CanBridge bridge_with(can::mapping::load_can_config(mapping), t0, false);
-  can::bridge::CanBridge bridge_without(can::mapping::load_can_config(mapping), t1, false);
+  InputSet assist_from_can;  // [routing] assist_torque_nm = "can": the bridge feeds the assist
+  assist_from_can.set(model::index(Signal::kAssistTorque));
+  can::bridge::CanBridge bridge_with(can::mapping::load_can_config(mapping), t0, false,
+                                     assist_from_can);
+  can::bridge::CanBridge bridge_without(can::mapping::load_can_config(mapping), t1, false,
+                                        assist_from_can);
   model::Signals s_with = driver_inputs();
   model::Signals s_without = driver_inputs();
   for (auto* s : {&s_with, &s_without}) {

@@ -1,9 +1,9 @@
-#include "rig/log_histogram.h"
+#include "rig/rt/log_histogram.h"
 
 #include <bit>
 #include <cmath>
 
-namespace rig {
+namespace rig::rt {
 
 int LogHistogram::bucket_of(std::int64_t value_ns) noexcept {
   if (value_ns < kSub) return value_ns < 0 ? 0 : static_cast<int>(value_ns);
@@ -62,4 +62,4 @@ std::vector<LogHistogram::Bin> LogHistogram::bins() const {
   return out;
 }
 
-}  // namespace rig
+}  // namespace rig::rt

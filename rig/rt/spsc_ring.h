@@ -2,13 +2,13 @@
 /// @file
 /// A bounded lock-free single-producer single-consumer ring. The producer (the RT loop) fills a
 /// slot in place and commits it; the consumer reads the front slot in place and releases it. No
-/// allocation after construction, no locks, no blocking.
+/// allocation after construction, no locks, no blocking. Depends on nothing of the project.
 
 #include <atomic>
 #include <cstddef>
 #include <memory>
 
-namespace rig {
+namespace rig::rt {
 
 template <typename T>
 class SpscRing {
@@ -46,6 +46,11 @@ class SpscRing {
     tail_.store(tail_.load(std::memory_order_relaxed) + 1, std::memory_order_release);
   }
 
+  /// Either side: committed slots not yet released (exact on the caller's side, at most stale
+  /// towards the other side's progress).
+  [[nodiscard]] std::size_t size() const noexcept {
+    return head_.load(std::memory_order_acquire) - tail_.load(std::memory_order_acquire);
+  }
   [[nodiscard]] std::size_t capacity() const noexcept { return capacity_; }
 
  private:
@@ -55,4 +60,4 @@ class SpscRing {
   alignas(64) std::atomic<std::size_t> tail_{0};
 };
 
-}  // namespace rig
+}  // namespace rig::rt

@@ -1,9 +1,9 @@
-#include "rig/clock.h"
+#include "rig/rt/clock.h"
 
 #include <cerrno>
 #include <ctime>
 
-namespace rig {
+namespace rig::rt {
 namespace {
 std::int64_t read(clockid_t id) noexcept {
   timespec ts{};
@@ -23,4 +23,4 @@ void MonotonicClock::sleep_until(std::int64_t deadline_ns) noexcept {
   }
 }
 
-}  // namespace rig
+}  // namespace rig::rt

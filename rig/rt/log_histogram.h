@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace rig {
+namespace rig::rt {
 
 class LogHistogram {
  public:
@@ -52,4 +52,4 @@ class LogHistogram {
   std::atomic<std::int64_t> max_{0};
 };
 
-}  // namespace rig
+}  // namespace rig::rt

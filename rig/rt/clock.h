@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-namespace rig {
+namespace rig::rt {
 
 class Clock {
  public:
@@ -43,4 +43,4 @@ class VirtualClock final : public Clock {
   std::int64_t now_ns_ = 0;
 };
 
-}  // namespace rig
+}  // namespace rig::rt

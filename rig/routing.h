@@ -1,0 +1,42 @@
+#pragma once
+/// @file
+/// Which source feeds each model input, decided once at start from [routing] and the [driver]:
+///
+///   CAN     an input [routing] sends from "can" (the ECU's value, decoded by the CAN bridge);
+///   driver  an input the driver writes, or one [routing] names "driver";
+///   model   every other input (nobody writes it; the model sees it invalid).
+///
+/// Each consumer is handed, at construction, the set it feeds: the CAN bridge its inputs, the
+/// driver its inputs, the model the assist choice. Nobody decides from model::Signals::source
+/// at run time; it is filled once, for the tools (LCM signals_t.source).
+
+#include <array>
+#include <cstdint>
+
+#include "io/config/strict_table.h"
+#include "io/cycle_io.h"
+#include "model/signals.h"
+
+namespace rig {
+
+/// One input's entry in [routing], as written.
+enum class RouteRequest : std::uint8_t { kNone, kDriver, kCan };
+using RoutingRequests = std::array<RouteRequest, model::kSignalCount>;
+
+/// Reads [routing]: `<input name> = "driver" | "can"`. ConfigError (file:line) for unknown
+/// names, outputs or values. Calls finish().
+RoutingRequests read_routing(io::config::StrictTable& routing_table);
+
+struct Routing {
+  std::array<model::SignalSource, model::kSignalCount> source{};  ///< published, per input
+  io::InputSet can_inputs;                                        ///< what the CAN bridge feeds
+  io::InputSet driver_inputs;                                     ///< what the driver feeds
+  /// The assist torque: the ECU's (`assist_torque_nm = "can"`), else the built-in boost curve.
+  bool assist_from_input = false;
+};
+
+/// `driver_writes`: the inputs the configured driver can write (none without a driver). A
+/// request for CAN wins over the driver.
+Routing resolve_routing(const RoutingRequests& requests, const io::InputSet& driver_writes);
+
+}  // namespace rig
