@@ -50,6 +50,7 @@ constexpr auto element(const detail::class_of_t<Array>& from) {
 /// columns are `<group><i>_<quantity>` (wheel_load_n -> wheel0_load_n, wheel1_load_n, ...).
 template <typename Message, typename From, typename Value = double>
 struct ArrayField {
+  using value_type = Value;
   std::string_view name;  ///< the LCM member
   std::string_view unit;  ///< SI; "1" for ratios and counts
   Value (*source)(const From&);
@@ -59,6 +60,7 @@ struct ArrayField {
 /// A quantity with one value per message: LCM member and CSV column `name`.
 template <typename Message, typename From, typename Value = double>
 struct ScalarField {
+  using value_type = Value;
   std::string_view name;
   std::string_view unit;
   Value (*source)(const From&);
