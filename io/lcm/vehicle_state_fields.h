@@ -20,6 +20,7 @@
 
 namespace rig::io::lcm {
 
+/// The rows, grouped by what they repeat over; groups and rows are in CSV column order.
 struct VehicleStateFields {
   using S = rig::vehicle_state_t;
   using R = model::ModelReport;
@@ -85,6 +86,7 @@ struct VehicleStateFields {
       {"brake_pressure_rl_pa", "Pa", element<&R::brake_pressure_pa, 2>, &S::brake_pressure_rl_pa},
       {"brake_pressure_rr_pa", "Pa", element<&R::brake_pressure_pa, 3>, &S::brake_pressure_rr_pa},
   };
+  /// Integers once per message (CSV: after the doubles).
   static constexpr ScalarField<S, R, std::int32_t> kVehicleInt[] = {
       {"gear", "1", member<&R::drivetrain, &Drivetrain::gear>, &S::gear},
   };
