@@ -18,7 +18,7 @@ namespace rig {
 
 namespace {
 
-constexpr std::size_t kHeadBytes = 64 * 1024;
+constexpr std::size_t kHeadBytes = std::size_t{64} * 1024;
 
 bool has_table(const FileContent& c, std::string_view key) {
   return c.toml && c.toml->get_as<toml::table>(key) != nullptr;
