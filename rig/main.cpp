@@ -1,38 +1,30 @@
 /// @file
 /// `rig`: command line. Exit codes: 0 ok, 2 bad usage or configuration, 1 runtime failure.
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
-#include "io/config/config_error.h"
+#include "rig/check.h"
 #include "rig/run.h"
 
 namespace {
 
-int check(const std::string& file) {
-  try {
-    const rig::RigConfig config = rig::load_config(file);
-    rig::RunOptions options;
-    options.config_file = file;
-    try {
-      (void)rig::make_io(config, options);  // loads DBC and mapping files, opens CAN
-    } catch (const rig::io::config::ConfigError&) {
-      throw;
-    } catch (const std::exception& e) {
-      std::cout << "note: " << e.what()
-                << " (not available on this machine; not a configuration error)\n";
-    }
-    std::cout << file << ": OK\n";
-    return 0;
-  } catch (const rig::io::config::ConfigError& e) {
-    std::cerr << e.what() << "\n";
-    return 2;
+/// `rig check FILE... [--kind KIND]`: exit 0 if every file checks OK, else 2.
+int check(const std::vector<std::string>& files, const std::string& kind_name) {
+  const rig::FileKind* kind = kind_name.empty() ? nullptr : rig::find_file_kind(kind_name);
+  int code = 0;
+  for (const auto& file : files) {
+    code = std::max(code, rig::check_file(file, kind, std::cout, std::cerr));
   }
+  return code;
 }
 
 }  // namespace
@@ -62,9 +54,17 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--require-rt", run.require_rt, "fail if SCHED_FIFO or mlockall is refused");
   run_cmd->add_option("--inject-stall", stall, "test hook: CYCLE:MS")->group("");
 
-  std::string check_file;
-  auto* check_cmd = app.add_subcommand("check", "validate a configuration without running");
-  check_cmd->add_option("FILE", check_file, "configuration file")->required();
+  std::vector<std::string> check_files;
+  std::string check_kind;
+  std::vector<std::string> kind_names;
+  for (const auto& kind : rig::file_kinds()) kind_names.emplace_back(kind.name);
+  auto* check_cmd = app.add_subcommand(
+      "check",
+      "validate files without running: run configurations, combinations, vehicles, "
+      "CAN mappings, DBCs (the kind is recognised from the content)");
+  check_cmd->add_option("FILE", check_files, "files to check")->required();
+  check_cmd->add_option("--kind", check_kind, "check every FILE as this kind")
+      ->check(CLI::IsMember(kind_names));
 
   try {
     app.parse(argc, argv);
@@ -82,6 +82,6 @@ int main(int argc, char** argv) {
     std::cerr << "rig: bad --inject-stall: " << e.what() << "\n";
     return 2;
   }
-  if (*check_cmd) return check(check_file);
+  if (*check_cmd) return check(check_files, check_kind);
   return rig::run(run);
 }

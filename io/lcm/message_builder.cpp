@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include "io/lcm/vehicle_state_fields.h"
+
 namespace rig::io::lcm {
 
 namespace {
@@ -14,107 +16,74 @@ void resize(std::vector<T>& v, std::size_t n) {
 
 std::int32_t clamp_count(std::int32_t count, int max) { return std::clamp(count, 0, max); }
 
-}  // namespace
+using Fields = VehicleStateFields;
 
-void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg) {
-  const auto& t = snapshot.timing;
-  const auto& r = snapshot.report;
+/// Sizes the arrays of `Rows` to `n` elements (no allocation once they have that size).
+template <const auto& Rows>
+void size_arrays(rig::vehicle_state_t& msg, std::size_t n) {
+  for (const auto& row : Rows) resize(msg.*row.lcm, n);
+}
+
+/// Element `i` of every array of `Rows`, from `from` (a unit, wheel or joint report).
+template <const auto& Rows, typename From>
+void set_elements(rig::vehicle_state_t& msg, std::size_t i, const From& from) {
+  for_each_row<Rows>([&](const auto& row) { (msg.*row.lcm)[i] = row.source(from); });
+}
+
+template <const auto& Rows>
+void set_scalars(rig::vehicle_state_t& msg, const model::ModelReport& r) {
+  for_each_row<Rows>([&](const auto& row) { msg.*row.lcm = row.source(r); });
+}
+
+void fill_frame(const CycleTiming& t, rig::vehicle_state_t& msg) {
   msg.sim_time_s = t.sim_time_s;
   msg.monotonic_ns = t.wake_ns;
   msg.cycle = static_cast<std::int64_t>(t.cycle);
   msg.lateness_ns = t.lateness_ns;
   msg.compute_ns = t.compute_ns;
   msg.deadline_miss = t.deadline_miss ? 1 : 0;
+}
+
+std::size_t wheel_count(const model::UnitReport& unit) {
+  return static_cast<std::size_t>(clamp_count(unit.wheel_count, model::kMaxWheelsPerUnit));
+}
+
+}  // namespace
+
+void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg) {
+  const auto& r = snapshot.report;
+  fill_frame(snapshot.timing, msg);
 
   const std::int32_t units = clamp_count(r.unit_count, model::kMaxUnits);
   const auto nu = static_cast<std::size_t>(units);
   msg.num_units = units;
-  for (auto* v : {&msg.unit_x_m, &msg.unit_y_m, &msg.unit_z_m, &msg.unit_roll_rad,
-                  &msg.unit_pitch_rad, &msg.unit_yaw_rad, &msg.unit_vx_mps, &msg.unit_vy_mps,
-                  &msg.unit_vz_mps, &msg.unit_wx_radps, &msg.unit_wy_radps, &msg.unit_wz_radps,
-                  &msg.unit_ax_mps2, &msg.unit_ay_mps2, &msg.unit_az_mps2}) {
-    resize(*v, nu);
-  }
+  size_arrays<Fields::kUnit>(msg, nu);
   std::size_t wheels = 0;
   for (std::size_t u = 0; u < nu; ++u) {
-    const auto& unit = r.units[u];
-    msg.unit_x_m[u] = unit.position_m[0];
-    msg.unit_y_m[u] = unit.position_m[1];
-    msg.unit_z_m[u] = unit.position_m[2];
-    msg.unit_roll_rad[u] = unit.orientation_rad[0];
-    msg.unit_pitch_rad[u] = unit.orientation_rad[1];
-    msg.unit_yaw_rad[u] = unit.orientation_rad[2];
-    msg.unit_vx_mps[u] = unit.velocity_mps[0];
-    msg.unit_vy_mps[u] = unit.velocity_mps[1];
-    msg.unit_vz_mps[u] = unit.velocity_mps[2];
-    msg.unit_wx_radps[u] = unit.angular_velocity_radps[0];
-    msg.unit_wy_radps[u] = unit.angular_velocity_radps[1];
-    msg.unit_wz_radps[u] = unit.angular_velocity_radps[2];
-    msg.unit_ax_mps2[u] = unit.acceleration_mps2[0];
-    msg.unit_ay_mps2[u] = unit.acceleration_mps2[1];
-    msg.unit_az_mps2[u] = unit.acceleration_mps2[2];
-    wheels += static_cast<std::size_t>(clamp_count(unit.wheel_count, model::kMaxWheelsPerUnit));
+    set_elements<Fields::kUnit>(msg, u, r.units[u]);
+    wheels += wheel_count(r.units[u]);
   }
 
   msg.num_wheels = static_cast<std::int32_t>(wheels);
   resize(msg.wheel_unit, wheels);
-  for (auto* v : {&msg.wheel_spin_radps, &msg.wheel_slip_x, &msg.wheel_slip_y, &msg.wheel_force_x_n,
-                  &msg.wheel_force_y_n, &msg.wheel_load_n, &msg.wheel_x_e_m, &msg.wheel_y_e_m,
-                  &msg.wheel_steer_rad, &msg.wheel_brake_torque_nm, &msg.wheel_drive_torque_nm}) {
-    resize(*v, wheels);
-  }
+  size_arrays<Fields::kWheel>(msg, wheels);
   std::size_t k = 0;
   for (std::size_t u = 0; u < nu; ++u) {
     const auto& unit = r.units[u];
-    const auto count =
-        static_cast<std::size_t>(clamp_count(unit.wheel_count, model::kMaxWheelsPerUnit));
-    for (std::size_t w = 0; w < count; ++w, ++k) {
-      const auto& wheel = unit.wheels[w];
+    for (std::size_t w = 0; w < wheel_count(unit); ++w, ++k) {
       msg.wheel_unit[k] = static_cast<std::int8_t>(u);
-      msg.wheel_spin_radps[k] = wheel.spin_radps;
-      msg.wheel_slip_x[k] = wheel.slip_x;
-      msg.wheel_slip_y[k] = wheel.slip_y;
-      msg.wheel_force_x_n[k] = wheel.force_x_n;
-      msg.wheel_force_y_n[k] = wheel.force_y_n;
-      msg.wheel_load_n[k] = wheel.load_n;
-      msg.wheel_x_e_m[k] = wheel.deflection_x_m;
-      msg.wheel_y_e_m[k] = wheel.deflection_y_m;
-      msg.wheel_steer_rad[k] = wheel.steer_angle_rad;
-      msg.wheel_brake_torque_nm[k] = wheel.brake_torque_nm;
-      msg.wheel_drive_torque_nm[k] = wheel.drive_torque_nm;
+      set_elements<Fields::kWheel>(msg, k, unit.wheels[w]);
     }
   }
 
-  msg.steering_wheel_angle_rad = r.steering.wheel_angle_rad;
-  msg.steering_wheel_torque_nm = r.steering.wheel_torque_nm;
-  msg.torsion_bar_torque_nm = r.steering.torsion_bar_torque_nm;
-  msg.rack_travel_m = r.steering.rack_travel_m;
-  msg.rack_force_n = r.steering.rack_force_n;
-  msg.assist_torque_nm = r.steering.assist_torque_nm;
-
-  msg.engine_speed_radps = r.drivetrain.engine_speed_radps;
-  msg.engine_torque_nm = r.drivetrain.engine_torque_nm;
-  msg.gear = r.drivetrain.gear;
-
-  msg.brake_pressure_fl_pa = r.brake_pressure_pa[0];
-  msg.brake_pressure_fr_pa = r.brake_pressure_pa[1];
-  msg.brake_pressure_rl_pa = r.brake_pressure_pa[2];
-  msg.brake_pressure_rr_pa = r.brake_pressure_pa[3];
+  set_scalars<Fields::kVehicle>(msg, r);
+  set_scalars<Fields::kVehicleInt>(msg, r);
 
   const std::int32_t joints = clamp_count(r.joint_count, model::kMaxJoints);
   const auto nj = static_cast<std::size_t>(joints);
   msg.num_joints = joints;
-  for (auto* v : {&msg.joint_force_x_n, &msg.joint_force_y_n, &msg.joint_force_z_n,
-                  &msg.joint_violation_m, &msg.joint_rod_force_n}) {
-    resize(*v, nj);
-  }
-  for (std::size_t j = 0; j < nj; ++j) {
-    msg.joint_force_x_n[j] = r.joints[j].force_n[0];
-    msg.joint_force_y_n[j] = r.joints[j].force_n[1];
-    msg.joint_force_z_n[j] = r.joints[j].force_n[2];
-    msg.joint_violation_m[j] = r.joints[j].violation_m;
-    msg.joint_rod_force_n[j] = r.joints[j].rod_force_n;
-  }
+  size_arrays<Fields::kJoint>(msg, nj);
+  for (std::size_t j = 0; j < nj; ++j) set_elements<Fields::kJoint>(msg, j, r.joints[j]);
 }
 
 void fill_signals(const Snapshot& snapshot, rig::signals_t& msg) {

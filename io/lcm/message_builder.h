@@ -1,8 +1,8 @@
 #pragma once
 /// @file
-/// Fills the generated LCM messages from a cycle snapshot. The messages are reused from call to
-/// call, so once their arrays have grown to the vehicle's unit and wheel counts, filling them
-/// does not allocate.
+/// Fills the generated LCM messages from a cycle snapshot (rig.vehicle_state_t from the field
+/// table io/lcm/vehicle_state_fields.h). The messages are reused from call to call, so once their
+/// arrays have grown to the vehicle's unit and wheel counts, filling them does not allocate.
 
 #include <cstdint>
 

@@ -35,4 +35,13 @@ void CsvLine::add(std::string_view text) {
   text_.push_back('"');
 }
 
+std::string join_columns(const std::vector<std::string>& columns) {
+  std::string out;
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (i != 0) out.push_back(',');
+    out += columns[i];
+  }
+  return out;
+}
+
 }  // namespace rig::log2csv

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rig::log2csv {
 
@@ -27,5 +28,8 @@ class CsvLine {
   std::string text_;
   bool first_ = true;
 };
+
+/// A header line: the column names separated by commas.
+std::string join_columns(const std::vector<std::string>& columns);
 
 }  // namespace rig::log2csv

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """End-to-end tests of the `rig` executable: rig_cli_test.py RIG_BINARY SOURCE_DIR CASE.
 
-Cases: offline, offline_complete, realtime, sigterm, notify, badconfig, usage. No absolute
-timing is asserted (except that a 50 ms injected stall produces a gap in the watchdog pings)."""
+Cases: offline, offline_complete, realtime, sigterm, notify, badconfig, usage, check_kinds,
+check_not_rig. No absolute timing is asserted (except that a 50 ms injected stall produces a gap
+in the watchdog pings)."""
 
 import json
 import os
@@ -202,6 +203,82 @@ def case_usage():
     check(r.returncode == 0, f"check of the default config: {r.stderr}")
 
 
-{"offline": case_offline, "offline_complete": case_offline_complete, "realtime": case_realtime, "sigterm": case_sigterm, "notify": case_notify,
- "badconfig": case_badconfig, "usage": case_usage}[CASE]()
+# The kind every file under config/ must check as, by folder (and extension in config/can/). A new
+# folder fails here until its kind is registered in rig/check.cpp and named here.
+KIND_OF_FOLDER = {"": "run-config", "maneuvers": "run-config", "combinations": "combination",
+                  "vehicles": "vehicle", "can/.toml": "can-mapping", "can/.dbc": "dbc"}
+KINDS = ["run-config", "combination", "vehicle", "can-mapping", "dbc"]
+
+
+def config_files():
+    files = []
+    for root, _, names in os.walk(os.path.join(SRC, "config")):
+        for name in sorted(names):
+            path = os.path.join(root, name)
+            folder = os.path.relpath(root, os.path.join(SRC, "config"))
+            folder = "" if folder == "." else folder
+            key = folder if folder in KIND_OF_FOLDER else f"{folder}/{os.path.splitext(name)[1]}"
+            check(key in KIND_OF_FOLDER, f"{path}: no expected kind for config/{folder}")
+            files.append((path, KIND_OF_FOLDER[key]))
+    check(len(files) >= 19, f"only {len(files)} files under config/")
+    return sorted(files)
+
+
+def case_check_kinds():
+    files = config_files()
+    for path, kind in files:
+        for args in (["check", path], ["check", "--kind", kind, path]):
+            r = run(args)
+            check(r.returncode == 0, f"{args}: exit {r.returncode}: {r.stderr}")
+            check(f"{path}: {kind}: OK\n" in r.stdout, f"{args}: stdout {r.stdout!r}")
+    # All at once: one OK line each, in order.
+    r = run(["check"] + [p for p, _ in files])
+    check(r.returncode == 0, f"check of all files: exit {r.returncode}: {r.stderr}")
+    oks = [line for line in r.stdout.splitlines() if line.endswith(": OK")]
+    check(oks == [f"{p}: {k}: OK" for p, k in files], f"check of all files: {oks}")
+    # A wrong --kind is a `file:line:` error, exit 2. A combination is a run configuration too.
+    for path, kind in files:
+        for wrong in KINDS:
+            if wrong == kind or (kind, wrong) == ("combination", "run-config"):
+                continue
+            r = run(["check", "--kind", wrong, path])
+            check(r.returncode == 2, f"{path} as {wrong}: exit {r.returncode}")
+            check(re.search(re.escape(path) + r":\d+: ", r.stderr), f"{path} as {wrong}: {r.stderr!r}")
+            check(": OK" not in r.stdout, f"{path} as {wrong}: {r.stdout!r}")
+    r = run(["check", "--kind", "combination", CONFIG])
+    check(re.search(re.escape(CONFIG) + r":\d+: \[model\] kind: is \"vehicle\", not \"combination\"",
+                    r.stderr), f"rig.toml as combination: {r.stderr!r}")
+    r = run(["check", "--kind", "road", CONFIG])
+    check(r.returncode == 2 and "road not in" in r.stderr, f"unknown kind: {r.returncode} {r.stderr!r}")
+
+
+def case_check_not_rig():
+    files = {
+        "pyproject.toml": b'[project]\nname = "x"\nversion = "1.0"\n[tool.black]\nline-length = 100\n',
+        "notes.txt": b"hello\nthis is not a rig file\n",
+        "blob.bin": bytes(range(256)) * 4,
+        "empty.toml": b"",
+        "data.json": b'{"model": {"kind": "vehicle"}}\n',
+    }
+    for name, data in files.items():
+        path = f"{TMP}/{name}"
+        open(path, "wb").write(data)
+        r = run(["check", path])
+        check(r.returncode == 2, f"{name}: exit {r.returncode}")
+        check(r.stderr.startswith(f"{path}: not a rig file\n"), f"{name}: stderr {r.stderr!r}")
+        for kind in KINDS:
+            check(f"    {kind}: " in r.stderr, f"{name}: expected kinds not listed: {r.stderr!r}")
+        check(r.stdout == "", f"{name}: stdout {r.stdout!r}")
+    both = f"{TMP}/both.toml"
+    open(both, "w").write("[rig]\nperiod_s = 0.001\n[chassis]\nmass_kg = 1\n")
+    r = run(["check", both])
+    check(r.returncode == 2 and "ambiguous: looks like run-config and vehicle" in r.stderr,
+          f"ambiguous: {r.returncode} {r.stderr!r}")
+    r = run(["check", CONFIG, f"{TMP}/notes.txt"])
+    check(r.returncode == 2 and f"{CONFIG}: run-config: OK" in r.stdout, f"good + bad: {r.returncode}")
+
+
+{"offline": case_offline, "offline_complete": case_offline_complete, "realtime": case_realtime,
+ "sigterm": case_sigterm, "notify": case_notify, "badconfig": case_badconfig, "usage": case_usage,
+ "check_kinds": case_check_kinds, "check_not_rig": case_check_not_rig}[CASE]()
 print("PASS", CASE)

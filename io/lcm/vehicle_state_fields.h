@@ -1,0 +1,112 @@
+#pragma once
+/// @file
+/// The one table of what rig.vehicle_state_t (channel RIG_STATE) carries of the model's report:
+/// one row per quantity, {LCM member, unit, source in model/report.h, LCM member pointer}. The
+/// message builder (message_builder.cpp) fills the message from these rows and rig-log2csv
+/// writes a CSV column (arrays: one per element) for each, in the order of the rows.
+///
+/// A new logged quantity is one row here plus its field in lcmtypes/vehicle_state_t.lcm, e.g.
+/// for a new double per wheel `model::WheelReport::camber_rad`:
+///     {"wheel_camber_rad", "rad", member<&W::camber_rad>, &S::wheel_camber_rad},
+///     double  wheel_camber_rad[num_wheels];          (in vehicle_state_t.lcm)
+/// tests/io/lcm/field_table_test.py fails until the .lcm, this table and the CSV agree.
+
+#include <cstdint>
+#include <string_view>
+
+#include "io/lcm/field_table.h"
+#include "model/report.h"
+#include "rig/vehicle_state_t.hpp"
+
+namespace rig::io::lcm {
+
+/// The rows, grouped by what they repeat over; groups and rows are in CSV column order.
+struct VehicleStateFields {
+  using S = rig::vehicle_state_t;
+  using R = model::ModelReport;
+  using U = model::UnitReport;
+  using W = model::WheelReport;
+  using J = model::JointReport;
+  using Steering = model::SteeringReport;
+  using Drivetrain = model::DrivetrainReport;
+
+  /// Per unit (num_units, tractor first): position and orientation in the road frame,
+  /// velocities and accelerations in the unit's body axes.
+  static constexpr ArrayField<S, U> kUnit[] = {
+      {"unit_x_m", "m", element<&U::position_m, 0>, &S::unit_x_m},
+      {"unit_y_m", "m", element<&U::position_m, 1>, &S::unit_y_m},
+      {"unit_z_m", "m", element<&U::position_m, 2>, &S::unit_z_m},
+      {"unit_roll_rad", "rad", element<&U::orientation_rad, 0>, &S::unit_roll_rad},
+      {"unit_pitch_rad", "rad", element<&U::orientation_rad, 1>, &S::unit_pitch_rad},
+      {"unit_yaw_rad", "rad", element<&U::orientation_rad, 2>, &S::unit_yaw_rad},
+      {"unit_vx_mps", "m/s", element<&U::velocity_mps, 0>, &S::unit_vx_mps},
+      {"unit_vy_mps", "m/s", element<&U::velocity_mps, 1>, &S::unit_vy_mps},
+      {"unit_vz_mps", "m/s", element<&U::velocity_mps, 2>, &S::unit_vz_mps},
+      {"unit_wx_radps", "rad/s", element<&U::angular_velocity_radps, 0>, &S::unit_wx_radps},
+      {"unit_wy_radps", "rad/s", element<&U::angular_velocity_radps, 1>, &S::unit_wy_radps},
+      {"unit_wz_radps", "rad/s", element<&U::angular_velocity_radps, 2>, &S::unit_wz_radps},
+      {"unit_ax_mps2", "m/s^2", element<&U::acceleration_mps2, 0>, &S::unit_ax_mps2},
+      {"unit_ay_mps2", "m/s^2", element<&U::acceleration_mps2, 1>, &S::unit_ay_mps2},
+      {"unit_az_mps2", "m/s^2", element<&U::acceleration_mps2, 2>, &S::unit_az_mps2},
+  };
+
+  /// Per wheel (num_wheels: every unit's wheels, front to rear, left before right).
+  static constexpr ArrayField<S, W> kWheel[] = {
+      {"wheel_spin_radps", "rad/s", member<&W::spin_radps>, &S::wheel_spin_radps},
+      {"wheel_slip_x", "1", member<&W::slip_x>, &S::wheel_slip_x},
+      {"wheel_slip_y", "1", member<&W::slip_y>, &S::wheel_slip_y},
+      {"wheel_force_x_n", "N", member<&W::force_x_n>, &S::wheel_force_x_n},
+      {"wheel_force_y_n", "N", member<&W::force_y_n>, &S::wheel_force_y_n},
+      {"wheel_load_n", "N", member<&W::load_n>, &S::wheel_load_n},
+      {"wheel_x_e_m", "m", member<&W::deflection_x_m>, &S::wheel_x_e_m},
+      {"wheel_y_e_m", "m", member<&W::deflection_y_m>, &S::wheel_y_e_m},
+      {"wheel_steer_rad", "rad", member<&W::steer_angle_rad>, &S::wheel_steer_rad},
+      {"wheel_brake_torque_nm", "N m", member<&W::brake_torque_nm>, &S::wheel_brake_torque_nm},
+      {"wheel_drive_torque_nm", "N m", member<&W::drive_torque_nm>, &S::wheel_drive_torque_nm},
+  };
+
+  /// Once per message: steering, drive train, the first unit's brake pressures.
+  static constexpr ScalarField<S, R> kVehicle[] = {
+      {"steering_wheel_angle_rad", "rad", member<&R::steering, &Steering::wheel_angle_rad>,
+       &S::steering_wheel_angle_rad},
+      {"steering_wheel_torque_nm", "N m", member<&R::steering, &Steering::wheel_torque_nm>,
+       &S::steering_wheel_torque_nm},
+      {"torsion_bar_torque_nm", "N m", member<&R::steering, &Steering::torsion_bar_torque_nm>,
+       &S::torsion_bar_torque_nm},
+      {"rack_travel_m", "m", member<&R::steering, &Steering::rack_travel_m>, &S::rack_travel_m},
+      {"rack_force_n", "N", member<&R::steering, &Steering::rack_force_n>, &S::rack_force_n},
+      {"assist_torque_nm", "N m", member<&R::steering, &Steering::assist_torque_nm>,
+       &S::assist_torque_nm},
+      {"engine_speed_radps", "rad/s", member<&R::drivetrain, &Drivetrain::engine_speed_radps>,
+       &S::engine_speed_radps},
+      {"engine_torque_nm", "N m", member<&R::drivetrain, &Drivetrain::engine_torque_nm>,
+       &S::engine_torque_nm},
+      {"brake_pressure_fl_pa", "Pa", element<&R::brake_pressure_pa, 0>, &S::brake_pressure_fl_pa},
+      {"brake_pressure_fr_pa", "Pa", element<&R::brake_pressure_pa, 1>, &S::brake_pressure_fr_pa},
+      {"brake_pressure_rl_pa", "Pa", element<&R::brake_pressure_pa, 2>, &S::brake_pressure_rl_pa},
+      {"brake_pressure_rr_pa", "Pa", element<&R::brake_pressure_pa, 3>, &S::brake_pressure_rr_pa},
+  };
+  /// Integers once per message (CSV: after the doubles).
+  static constexpr ScalarField<S, R, std::int32_t> kVehicleInt[] = {
+      {"gear", "1", member<&R::drivetrain, &Drivetrain::gear>, &S::gear},
+  };
+
+  /// Per joint of a combination (num_joints; joint i couples unit i and unit i + 1): the
+  /// constraint force on the leading unit, road frame.
+  static constexpr ArrayField<S, J> kJoint[] = {
+      {"joint_force_x_n", "N", element<&J::force_n, 0>, &S::joint_force_x_n},
+      {"joint_force_y_n", "N", element<&J::force_n, 1>, &S::joint_force_y_n},
+      {"joint_force_z_n", "N", element<&J::force_n, 2>, &S::joint_force_z_n},
+      {"joint_violation_m", "m", member<&J::violation_m>, &S::joint_violation_m},
+      {"joint_rod_force_n", "N", member<&J::rod_force_n>, &S::joint_rod_force_n},
+  };
+
+  /// The message's frame, written by the builder and rig-log2csv themselves: the cycle's
+  /// timing (io::CycleTiming), the group counts and each wheel's unit.
+  static constexpr std::string_view kFrame[] = {
+      "sim_time_s",    "monotonic_ns", "cycle",      "lateness_ns", "compute_ns",
+      "deadline_miss", "num_units",    "num_wheels", "wheel_unit",  "num_joints",
+  };
+};
+
+}  // namespace rig::io::lcm

@@ -1,0 +1,129 @@
+#include "rig/log2csv/vehicle_state_csv.h"
+
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "io/lcm/vehicle_state_fields.h"
+#include "rig/vehicle_state_t.hpp"
+
+namespace rig::log2csv {
+
+namespace {
+
+using Fields = io::lcm::VehicleStateFields;
+using State = rig::vehicle_state_t;
+
+/// Element `i` of array field `name`: wheel_load_n, 3 -> wheel3_load_n.
+std::string element_column(std::string_view name, std::size_t i) {
+  const std::string_view group = io::lcm::group_of(name);
+  std::string column(group);
+  column += std::to_string(i);
+  column += name.substr(group.size());
+  return column;
+}
+
+template <typename Value>
+void add_cell(CsvLine& line, Value value) {
+  if constexpr (std::is_floating_point_v<Value>) {
+    line.add(static_cast<double>(value));
+  } else {
+    line.add(static_cast<std::int64_t>(value));
+  }
+}
+
+/// Element `i` of `v`, or an empty cell if this message has fewer elements than the first.
+template <typename Value>
+void add_element(CsvLine& line, const std::vector<Value>& v, std::size_t i) {
+  if (i < v.size()) {
+    add_cell(line, v[i]);
+  } else {
+    line.add_empty();
+  }
+}
+
+/// The columns of an array group, element by element: unit0_x_m, unit0_y_m, ..., unit1_x_m.
+template <typename Rows>
+void add_array_headers(std::vector<std::string>& h, const Rows& rows, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) {
+    for (const auto& row : rows) h.push_back(element_column(row.name, i));
+  }
+}
+
+template <typename Rows>
+void add_array_cells(CsvLine& line, const State& msg, const Rows& rows, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) {
+    for (const auto& row : rows) add_element(line, msg.*row.lcm, i);
+  }
+}
+
+template <typename Rows>
+void add_scalar_headers(std::vector<std::string>& h, const Rows& rows) {
+  for (const auto& row : rows) h.emplace_back(row.name);
+}
+
+template <typename Rows>
+void add_scalar_cells(CsvLine& line, const State& msg, const Rows& rows) {
+  for (const auto& row : rows) add_cell(line, msg.*row.lcm);
+}
+
+/// Elements of a group in `msg`: the length of its first array.
+template <typename Rows>
+std::size_t group_size(const State& msg, const Rows& rows) {
+  return (msg.*rows[0].lcm).size();
+}
+
+class VehicleStateCsv final : public ChannelCsv {
+ public:
+  [[nodiscard]] const char* type_name() const override { return "rig.vehicle_state_t"; }
+
+  [[nodiscard]] std::string header() const override {
+    std::vector<std::string> h{"timestamp_us", "sim_time_s", "monotonic_ns",  "cycle",
+                               "lateness_ns",  "compute_ns", "deadline_miss", "num_units"};
+    add_array_headers(h, Fields::kUnit, units_);
+    h.emplace_back("num_wheels");
+    for (std::size_t i = 0; i < wheels_; ++i) h.push_back(element_column("wheel_unit", i));
+    add_array_headers(h, Fields::kWheel, wheels_);
+    add_scalar_headers(h, Fields::kVehicle);
+    add_scalar_headers(h, Fields::kVehicleInt);
+    h.emplace_back("num_joints");
+    add_array_headers(h, Fields::kJoint, joints_);
+    return join_columns(h);
+  }
+
+  bool row(const Event& event, CsvLine& line) override {
+    if (msg_.decode(event.data, 0, static_cast<int>(event.size)) < 0) return false;
+    if (!sized_) {
+      units_ = group_size(msg_, Fields::kUnit);
+      wheels_ = group_size(msg_, Fields::kWheel);
+      joints_ = group_size(msg_, Fields::kJoint);
+      sized_ = true;
+    }
+    line.add(event.timestamp_us);
+    line.add(msg_.sim_time_s);
+    for (std::int64_t v : {msg_.monotonic_ns, msg_.cycle, msg_.lateness_ns, msg_.compute_ns,
+                           std::int64_t{msg_.deadline_miss}, std::int64_t{msg_.num_units}}) {
+      line.add(v);
+    }
+    add_array_cells(line, msg_, Fields::kUnit, units_);
+    line.add(std::int64_t{msg_.num_wheels});
+    for (std::size_t i = 0; i < wheels_; ++i) add_element(line, msg_.wheel_unit, i);
+    add_array_cells(line, msg_, Fields::kWheel, wheels_);
+    add_scalar_cells(line, msg_, Fields::kVehicle);
+    add_scalar_cells(line, msg_, Fields::kVehicleInt);
+    line.add(std::int64_t{msg_.num_joints});
+    add_array_cells(line, msg_, Fields::kJoint, joints_);
+    return true;
+  }
+
+ private:
+  State msg_{};
+  bool sized_ = false;
+  std::size_t units_ = 0, wheels_ = 0, joints_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<ChannelCsv> make_vehicle_state_csv() { return std::make_unique<VehicleStateCsv>(); }
+
+}  // namespace rig::log2csv
