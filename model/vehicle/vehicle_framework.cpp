@@ -136,9 +136,7 @@ WheelForces VehicleFramework::wheel_forces(const WheelContact& c, const Vector& 
                                          c.penetration_m, c.penetration_rate_mps)
                    .force_n;
   // Tire forces through the deflection states (eqs. 22, 24, 26) with the newest x_e, y_e, w.
-  const tire::TireKinematics kin{
-      c.vx_mps, c.vy_mps, state_.spin_radps[k],
-      tire::dynamic_rolling_radius(t.radius_unloaded_m, c.penetration_m)};
+  const tire::TireKinematics kin = tire_kinematics(c, i);
   const tire::TireSlip slip = tire::slip_of(ch, kin, t.velocity_floor_mps);
   out.slip_x = slip.slip_x;
   out.slip_y = slip.slip_y;
@@ -193,6 +191,66 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
   q.segment<3>(3) = tr;
 }
 
+void VehicleFramework::suspension_jacobians(int i, const Vector& y, const Vector& z, Matrix& dq_dy,
+                                            Matrix& dq_dz) const noexcept {
+  // suspension on the hub coordinates (relative DOF: acts on q_h only)
+  const AxleParams& ax = p_.axles[static_cast<std::size_t>(i / 2)];
+  const Eigen::Index h = 6 + i;
+  const double s = y(h);
+  double stiff = ax.spring_stiffness_npm + ax.anti_roll_stiffness_npm;
+  if (s > ax.bump_stop_travel_m || s < -ax.rebound_stop_travel_m) stiff += ax.stop_stiffness_npm;
+  dq_dy(h, h) -= stiff;
+  dq_dy(h, 6 + (i ^ 1)) += ax.anti_roll_stiffness_npm;
+  dq_dz(h, h) -= z(h) > 0 ? ax.damper_bump_nspm : ax.damper_rebound_nspm;
+}
+
+void VehicleFramework::tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv, const Vector& y,
+                                      const Vector& z, Matrix& dq_dy,
+                                      Matrix& dq_dz) const noexcept {
+  // tire: force rows at the wheel centre (J_C^T u), velocity rows at the contact (u^T J_P)
+  const auto k = static_cast<std::size_t>(i);
+  const tire::TmeasyParams& t = p_.axles[k / 2].tire.tmeasy;
+  const Eigen::Index h = 6 + i;
+  const WheelContact c = contact(rot, y, z, i);
+  if (c.penetration_m <= 0) return;
+  const Vec3 centre = wheel_centre(i, y(h));
+  const Vec3 es = hub_axis(i);
+  const tire::TireCharacteristic& ch = work_.wheels[k].tire.characteristic;
+  const tire::TireKinematics kin = tire_kinematics(c, i);
+  const tire::TireSlip slip = tire::slip_of(ch, kin, t.velocity_floor_mps);
+  // d F / d v along each direction: vertical damping; eq. (24) damping paths at fixed f
+  const tire::DampingPaths paths = tire::damping_paths(t, ch, kin, slip.f_per_slip);
+  // the rows have non-zeros only in the body columns 0..5 and the hub column h: update the
+  // 7 x 7 sub-block instead of a dense outer product
+  const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};
+  const double damp[3] = {t.vertical_damping_nspm, paths.long_nspm, paths.lat_nspm};
+  using Row7 = Eigen::Matrix<double, 7, 1>;
+  Eigen::Matrix<double, 7, 7> dz_block = Eigen::Matrix<double, 7, 7>::Zero();
+  Eigen::Matrix<double, 7, 7> dy_block;
+  for (int d = 0; d < 3; ++d) {
+    const Vec3& u = *dirs[d];
+    Row7 a, b;
+    a << u, centre.cross(u), es.dot(u);
+    b << u, c.lever_m.cross(u), es.dot(u);
+    dz_block.noalias() -= (damp[d] * a) * b.transpose();
+    if (d == 0) {
+      // penetration rate = -n^T J_P z, and y' = K^-1 z: d pen / d y = -n^T J_P K
+      Row7 bk;
+      bk << rot * b.segment<3>(0), e_inv.transpose() * b.segment<3>(3), b(6);
+      dy_block.noalias() = (-t.vertical_stiffness_npm * a) * bk.transpose();
+    }
+  }
+  // scatter the 7 x 7 block (body columns 0..5 and the hub column h)
+  const auto scatter = [h](const Eigen::Matrix<double, 7, 7>& blk, Matrix& m) {
+    m.topLeftCorner<6, 6>() += blk.topLeftCorner<6, 6>();
+    m.block<6, 1>(0, h) += blk.block<6, 1>(0, 6);
+    m.block<1, 6>(h, 0) += blk.block<1, 6>(6, 0);
+    m(h, h) += blk(6, 6);
+  };
+  scatter(dz_block, dq_dz);
+  scatter(dy_block, dq_dy);
+}
+
 bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
                                        Matrix& dq_dz) const noexcept {
   dq_dy.setZero(n_, n_);
@@ -200,62 +258,18 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
   const Mat3 rot = body_to_road(y(3), y(4), y(5));
   const Mat3 e_inv = body_rates_from_euler_rates(y(4), y(5));  // K_BB angle part
   for (int i = 0; i < wheel_count_; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    const AxleParams& ax = p_.axles[k / 2];
-    const tire::TmeasyParams& t = ax.tire.tmeasy;
-    const Eigen::Index h = 6 + i;
-    // suspension on the hub coordinates (relative DOF: acts on q_h only)
-    const double s = y(h);
-    double stiff = ax.spring_stiffness_npm + ax.anti_roll_stiffness_npm;
-    if (s > ax.bump_stop_travel_m || s < -ax.rebound_stop_travel_m) stiff += ax.stop_stiffness_npm;
-    dq_dy(h, h) -= stiff;
-    dq_dy(h, 6 + (i ^ 1)) += ax.anti_roll_stiffness_npm;
-    dq_dz(h, h) -= z(h) > 0 ? ax.damper_bump_nspm : ax.damper_rebound_nspm;
-    // tire: force rows at the wheel centre (J_C^T u), velocity rows at the contact (u^T J_P)
-    const WheelContact c = contact(rot, y, z, i);
-    if (c.penetration_m <= 0) continue;
-    const Vec3 centre = wheel_centre(i, y(h));
-    const Vec3 es = hub_axis(i);
-    const tire::TireCharacteristic& ch = work_.wheels[k].tire.characteristic;
-    const tire::TireKinematics kin{
-        c.vx_mps, c.vy_mps, state_.spin_radps[k],
-        tire::dynamic_rolling_radius(t.radius_unloaded_m, c.penetration_m)};
-    const tire::TireSlip slip = tire::slip_of(ch, kin, t.velocity_floor_mps);
-    // d F / d v along each direction: vertical damping; eq. (24) damping paths at fixed f
-    const tire::DampingPaths paths = tire::damping_paths(t, ch, kin, slip.f_per_slip);
-    const double dx = paths.long_nspm;
-    const double dy = paths.lat_nspm;
-    // the rows have non-zeros only in the body columns 0..5 and the hub column h: update the
-    // 7 x 7 sub-block instead of a dense outer product
-    const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};
-    const double damp[3] = {t.vertical_damping_nspm, dx, dy};
-    using Row7 = Eigen::Matrix<double, 7, 1>;
-    Eigen::Matrix<double, 7, 7> dz_block = Eigen::Matrix<double, 7, 7>::Zero();
-    Eigen::Matrix<double, 7, 7> dy_block;
-    for (int d = 0; d < 3; ++d) {
-      const Vec3& u = *dirs[d];
-      Row7 a, b;
-      a << u, centre.cross(u), es.dot(u);
-      b << u, c.lever_m.cross(u), es.dot(u);
-      dz_block.noalias() -= (damp[d] * a) * b.transpose();
-      if (d == 0) {
-        // penetration rate = -n^T J_P z, and y' = K^-1 z: d pen / d y = -n^T J_P K
-        Row7 bk;
-        bk << rot * b.segment<3>(0), e_inv.transpose() * b.segment<3>(3), b(6);
-        dy_block.noalias() = (-t.vertical_stiffness_npm * a) * bk.transpose();
-      }
-    }
-    // scatter the 7 x 7 block (body columns 0..5 and the hub column h)
-    const auto scatter = [h](const Eigen::Matrix<double, 7, 7>& blk, Matrix& m) {
-      m.topLeftCorner<6, 6>() += blk.topLeftCorner<6, 6>();
-      m.block<6, 1>(0, h) += blk.block<6, 1>(0, 6);
-      m.block<1, 6>(h, 0) += blk.block<1, 6>(6, 0);
-      m(h, h) += blk(6, 6);
-    };
-    scatter(dz_block, dq_dz);
-    scatter(dy_block, dq_dy);
+    suspension_jacobians(i, y, z, dq_dy, dq_dz);
+    tire_jacobians(i, rot, e_inv, y, z, dq_dy, dq_dz);
   }
   return true;
+}
+
+tire::TireKinematics VehicleFramework::tire_kinematics(const WheelContact& c,
+                                                       int i) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  return {
+      c.vx_mps, c.vy_mps, state_.spin_radps[k],
+      tire::dynamic_rolling_radius(p_.axles[k / 2].tire.tmeasy.radius_unloaded_m, c.penetration_m)};
 }
 
 }  // namespace rig::model::vehicle

@@ -72,6 +72,13 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   [[nodiscard]] Vec3 hub_axis(int i) const noexcept;
 
  private:
+  /// What the tire of wheel i sees at contact c (spin of the state, r_D from the penetration).
+  [[nodiscard]] tire::TireKinematics tire_kinematics(const WheelContact& c, int i) const noexcept;
+  void suspension_jacobians(int i, const Vector& y, const Vector& z, Matrix& dq_dy,
+                            Matrix& dq_dz) const noexcept;
+  void tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv, const Vector& y, const Vector& z,
+                      Matrix& dq_dy, Matrix& dq_dz) const noexcept;
+
   const VehicleParams& p_;
   VehicleState& state_;
   const VehicleWorkspace& work_;
