@@ -13,33 +13,39 @@ inline constexpr int kMaxWheelsPerUnit = 12;  ///< up to 6 axles with 2 wheels
 inline constexpr int kMaxJoints = 3;          ///< couplings between units
 
 struct WheelReport {
-  double spin_radps = 0;     ///< wheel spin rate
-  double slip_x = 0;         ///< longitudinal slip [-]
-  double slip_y = 0;         ///< lateral slip [-]
-  double force_x_n = 0;      ///< longitudinal tire force
-  double force_y_n = 0;      ///< lateral tire force
-  double load_n = 0;         ///< vertical tire force
-  double deflection_x_m = 0; ///< tire deflection x_e, eq. (24)
-  double deflection_y_m = 0; ///< tire deflection y_e
-  double hub_travel_m = 0;   ///< suspension travel
+  double spin_radps = 0;      ///< wheel spin rate
+  double slip_x = 0;          ///< longitudinal slip [-]
+  double slip_y = 0;          ///< lateral slip [-]
+  double force_x_n = 0;       ///< longitudinal tire force
+  double force_y_n = 0;       ///< lateral tire force
+  double load_n = 0;          ///< vertical tire force
+  double deflection_x_m = 0;  ///< tire deflection x_e, eq. (24)
+  double deflection_y_m = 0;  ///< tire deflection y_e
+  double hub_travel_m = 0;    ///< suspension travel
   double steer_angle_rad = 0;
   double brake_torque_nm = 0;
   double drive_torque_nm = 0;
+  // what the tire saw (model/tire's TireKinematics and the load of its characteristic): with
+  // the road's mu and the deflections these reproduce force_x_n, force_y_n exactly
+  double long_speed_mps = 0;    ///< contact point velocity along the tire's heading, v_x
+  double lat_speed_mps = 0;     ///< contact point velocity lateral, v_y
+  double rolling_radius_m = 0;  ///< dynamic rolling radius r_D
+  double tire_load_n = 0;       ///< F_z of the step's start, where the characteristic was taken
 };
 
 struct UnitReport {
-  std::array<double, 3> position_m{};         ///< CG in the road frame
-  std::array<double, 3> orientation_rad{};    ///< roll, pitch, yaw
-  std::array<double, 3> velocity_mps{};       ///< CG velocity, body axes
+  std::array<double, 3> position_m{};              ///< CG in the road frame
+  std::array<double, 3> orientation_rad{};         ///< roll, pitch, yaw
+  std::array<double, 3> velocity_mps{};            ///< CG velocity, body axes
   std::array<double, 3> angular_velocity_radps{};  ///< body axes
-  std::array<double, 3> acceleration_mps2{};  ///< CG acceleration, body axes
+  std::array<double, 3> acceleration_mps2{};       ///< CG acceleration, body axes
   std::int32_t wheel_count = 0;
   std::array<WheelReport, kMaxWheelsPerUnit> wheels{};
 };
 
 struct SteeringReport {
   double wheel_angle_rad = 0;
-  double wheel_torque_nm = 0;      ///< driver hand torque
+  double wheel_torque_nm = 0;  ///< driver hand torque
   double torsion_bar_torque_nm = 0;
   double rack_travel_m = 0;
   double rack_force_n = 0;

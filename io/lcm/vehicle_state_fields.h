@@ -63,6 +63,11 @@ struct VehicleStateFields {
       {"wheel_steer_rad", "rad", member<&W::steer_angle_rad>, &S::wheel_steer_rad},
       {"wheel_brake_torque_nm", "N m", member<&W::brake_torque_nm>, &S::wheel_brake_torque_nm},
       {"wheel_drive_torque_nm", "N m", member<&W::drive_torque_nm>, &S::wheel_drive_torque_nm},
+      {"wheel_hub_travel_m", "m", member<&W::hub_travel_m>, &S::wheel_hub_travel_m},
+      {"wheel_long_speed_mps", "m/s", member<&W::long_speed_mps>, &S::wheel_long_speed_mps},
+      {"wheel_lat_speed_mps", "m/s", member<&W::lat_speed_mps>, &S::wheel_lat_speed_mps},
+      {"wheel_rolling_radius_m", "m", member<&W::rolling_radius_m>, &S::wheel_rolling_radius_m},
+      {"wheel_tire_load_n", "N", member<&W::tire_load_n>, &S::wheel_tire_load_n},
   };
 
   /// Once per message: steering, drive train, the first unit's brake pressures.

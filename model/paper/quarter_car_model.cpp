@@ -57,6 +57,9 @@ void QuarterCarModel::fill_report(ModelReport& report) const noexcept {
   wheel.deflection_x_m = car_->deflection_m();
   wheel.brake_torque_nm = car_->brake_torque_nm();
   wheel.drive_torque_nm = car_->drive_torque_nm();
+  wheel.long_speed_mps = car_->speed_mps();  // the contact point moves with the car (eq. 9)
+  wheel.rolling_radius_m = params_.wheel_radius_m;
+  wheel.tire_load_n = car_->wheel_load_n();
   report.joint_count = 0;
 }
 

@@ -138,6 +138,7 @@ WheelForces VehicleFramework::wheel_forces(const WheelContact& c, const Vector& 
   // Tire forces through the deflection states (eqs. 22, 24, 26) with the newest x_e, y_e, w.
   const tire::TireKinematics kin = tire_kinematics(c, i);
   const tire::TireSlip slip = tire::slip_of(ch, kin, t.velocity_floor_mps);
+  out.tire = kin;
   out.slip_x = slip.slip_x;
   out.slip_y = slip.slip_y;
   if (out.load_n > 0) {  // lifted off now: no tire force

@@ -74,6 +74,10 @@ void fill_wheel(const VehicleState& state, const VehicleWorkspace& work, int i, 
   r.steer_angle_rad = w.steer_rad;
   r.brake_torque_nm = w.brake_torque_nm;
   r.drive_torque_nm = w.shaft_torque_nm;
+  r.long_speed_mps = w.out.tire.long_speed_mps;
+  r.lat_speed_mps = w.out.tire.lat_speed_mps;
+  r.rolling_radius_m = w.out.tire.rolling_radius_m;
+  r.tire_load_n = w.load_n;
 }
 
 }  // namespace

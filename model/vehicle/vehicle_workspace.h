@@ -20,7 +20,8 @@ struct WheelForces {
   double force_y_n = 0;
   double slip_x = 0;
   double slip_y = 0;
-  double suspension_n = 0;  ///< pushes the wheel down (compression +)
+  double suspension_n = 0;      ///< pushes the wheel down (compression +)
+  tire::TireKinematics tire{};  ///< what the tire saw: v_x, v_y, omega, r_D
 };
 
 struct WheelWork {
