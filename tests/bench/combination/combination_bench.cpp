@@ -6,12 +6,11 @@
 
 #include <benchmark/benchmark.h>
 
-#include "io/config/combination_file.h"
-#include "io/config/strict_table.h"
-#include "io/config/vehicle_file.h"
 #include "model/combination/combination.h"
 #include "model/combination/force_coupled.h"
 #include "rig/thread_begin_step_runner.h"
+#include "tests/support/bench_inputs.h"
+#include "tests/support/combination_files.h"
 
 namespace {
 
@@ -21,37 +20,20 @@ using rig::model::combination::Combination;
 using rig::model::combination::CombinationParams;
 using rig::model::combination::ForceCoupledCombination;
 
-constexpr const char* kCarTrailer = RIG_SOURCE_DIR "/config/combinations/car-trailer.toml";
-constexpr const char* kTractorSemi = RIG_SOURCE_DIR "/config/combinations/tractor-semitrailer.toml";
+using rig::test::kCarTrailer;
+using rig::test::kTractorSemi;
 
 CombinationParams load(const char* file, bool parallel) {
-  const toml::table doc = rig::io::config::load_toml_file(file);
-  rig::io::config::StrictTable top(doc, file, "top level");
-  rig::io::config::StrictTable m = top.table("model");
-  (void)m.string("kind");
-  const auto s = rig::io::config::read_combination_model(m);
-  CombinationParams p;
-  p.units = s.units;
-  p.joints = s.joints;
+  CombinationParams p = rig::test::load_combination(file);
   p.parallel = parallel;
   p.begin_step_runner = rig::make_thread_begin_step_runner;
-  p.newton = rig::model::combination::default_combination_newton_params();
   return p;
-}
-
-Signals inputs() {
-  Signals s;
-  for (std::size_t i = 0; i < rig::model::index(rig::model::kFirstOutput); ++i) s.valid[i] = true;
-  s[Signal::kGearRequest] = 99;
-  s[Signal::kThrottlePedal] = 0.3;
-  s[Signal::kSteeringWheelAngleCmd] = 0.5;
-  return s;
 }
 
 template <typename Model>
 void step_bench(benchmark::State& state, const char* file, bool parallel) {
   Model m(load(file, parallel), 1e-3);
-  Signals s = inputs();
+  Signals s = rig::test::cornering_inputs();
   m.set_forward_speed(15);
   for (int k = 0; k < 2000; ++k) (void)m.step(s);  // into a steady turn
   for (auto _ : state) {

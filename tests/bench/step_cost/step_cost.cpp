@@ -6,38 +6,16 @@
 #include <cstdlib>
 #include <string>
 
-#include "io/config/combination_file.h"
-#include "io/config/strict_table.h"
 #include "io/config/vehicle_file.h"
 #include "model/combination/combination.h"
 #include "model/vehicle/vehicle_model.h"
+#include "tests/support/bench_inputs.h"
+#include "tests/support/combination_files.h"
 
 namespace {
 
 using rig::model::Signal;
 using rig::model::Signals;
-
-Signals inputs() {
-  Signals s;
-  for (std::size_t i = 0; i < rig::model::index(rig::model::kFirstOutput); ++i) s.valid[i] = true;
-  s[Signal::kGearRequest] = 99;
-  s[Signal::kThrottlePedal] = 0.3;
-  s[Signal::kSteeringWheelAngleCmd] = 0.5;
-  return s;
-}
-
-rig::model::combination::CombinationParams load_combination(const std::string& file) {
-  const toml::table doc = rig::io::config::load_toml_file(file);
-  rig::io::config::StrictTable top(doc, file, "top level");
-  rig::io::config::StrictTable m = top.table("model");
-  (void)m.string("kind");
-  const auto settings = rig::io::config::read_combination_model(m);
-  rig::model::combination::CombinationParams p;
-  p.units = settings.units;
-  p.joints = settings.joints;
-  p.newton = rig::model::combination::default_combination_newton_params();
-  return p;
-}
 
 }  // namespace
 
@@ -53,7 +31,7 @@ int main(int argc, char** argv) {
   }
   const std::string kind = argv[1];
   const int n = argc > 3 ? std::atoi(argv[3]) : 1000;
-  Signals s = inputs();
+  Signals s = rig::test::cornering_inputs();
   auto run = [&](auto& m) {
     m.set_forward_speed(15);
     for (int k = 0; k < 2000; ++k) (void)m.step(s);  // into a steady turn
@@ -64,7 +42,7 @@ int main(int argc, char** argv) {
     rig::model::vehicle::VehicleModel m(rig::io::config::load_vehicle_file(argv[2]), 1e-3);
     run(m);
   } else {
-    rig::model::combination::Combination m(load_combination(argv[2]), 1e-3);
+    rig::model::combination::Combination m(rig::test::load_combination(argv[2]), 1e-3);
     run(m);
   }
   return 0;

@@ -6,24 +6,16 @@
 
 #include "io/config/vehicle_file.h"
 #include "model/vehicle/vehicle_model.h"
+#include "tests/support/bench_inputs.h"
 
 namespace {
 
 using rig::model::Signal;
 using rig::model::Signals;
 
-Signals inputs() {
-  Signals s;
-  for (std::size_t i = 0; i < rig::model::index(rig::model::kFirstOutput); ++i) s.valid[i] = true;
-  s[Signal::kGearRequest] = 99;
-  s[Signal::kThrottlePedal] = 0.3;
-  s[Signal::kSteeringWheelAngleCmd] = 0.5;
-  return s;
-}
-
 void step_bench(benchmark::State& state, const char* file) {
   rig::model::vehicle::VehicleModel m(rig::io::config::load_vehicle_file(file), 1e-3);
-  Signals s = inputs();
+  Signals s = rig::test::cornering_inputs();
   m.set_forward_speed(15);
   for (int k = 0; k < 2000; ++k) (void)m.step(s);  // into a steady turn
   for (auto _ : state) {
@@ -44,7 +36,7 @@ void BM_Sedan20sOffline(benchmark::State& state) {
       rig::io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
   for (auto _ : state) {
     rig::model::vehicle::VehicleModel m(params, 1e-3);
-    Signals s = inputs();
+    Signals s = rig::test::cornering_inputs();
     m.set_forward_speed(60 / 3.6);
     for (int k = 0; k < 20000; ++k) {
       const double t = k * 1e-3;
