@@ -72,7 +72,8 @@ model::vehicle::AxleKinematicsParams read_kinematics(StrictTable t) {
       k.grid.u_min = -0.5 * k.grid.u_step * (k.grid.u_count - 1);  // symmetric about u = 0
     }
     g->finish();
-    const auto n = static_cast<std::size_t>(k.grid.z_count * k.grid.u_count);
+    const auto n =
+        static_cast<std::size_t>(k.grid.z_count) * static_cast<std::size_t>(k.grid.u_count);
     const auto table = [&](const char* key) {
       std::vector<double> v = t.numbers(key);
       if (v.size() != n)

@@ -42,6 +42,7 @@ std::vector<std::unique_ptr<VehicleModel>> build_units(const CombinationParams& 
 
 std::vector<Eigen::Index> unit_sizes(const std::vector<std::unique_ptr<VehicleModel>>& units) {
   std::vector<Eigen::Index> sizes;
+  sizes.reserve(units.size());
   for (const auto& u : units) sizes.push_back(u->coordinate_size());
   return sizes;
 }
