@@ -7,6 +7,8 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "model/paper/coupled_pendulums.h"
@@ -109,7 +111,8 @@ int run(const std::string& args) {
 }
 
 TEST(RigPaperTool, WritesTheDocumentedColumns) {
-  const auto dir = std::filesystem::temp_directory_path() / "rig_paper_test";
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("rig_paper_test_" + std::to_string(::getpid()));  // parallel runs apart
   std::filesystem::create_directories(dir);
   const std::string qc = (dir / "qc.csv").string();
   const std::string pd = (dir / "pd.csv").string();

@@ -1,4 +1,6 @@
 // Host tests of the bridge's configuration and factory (the bridge on vcan: tests/io/can/vcan).
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,7 +17,12 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path write_rig_toml(const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "rig_can_bridge_test";
+  // one folder per test: ctest runs the tests of this file in parallel processes
+  const fs::path dir =
+      fs::temp_directory_path() /
+      ("rig_can_bridge_test_" +
+       std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+       std::to_string(::getpid()));
   fs::create_directories(dir);
   fs::copy_file(fs::path(RIG_SOURCE_DIR) / "config/can/steering-bench.toml",
                 dir / "steering-bench.toml", fs::copy_options::overwrite_existing);
