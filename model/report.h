@@ -31,6 +31,9 @@ struct WheelReport {
   double lat_speed_mps = 0;     ///< contact point velocity lateral, v_y
   double rolling_radius_m = 0;  ///< dynamic rolling radius r_D
   double tire_load_n = 0;       ///< F_z of the step's start, where the characteristic was taken
+  /// 1: slip_x, slip_y mean a slip (the wheel moves at least slip_mask_speed_mps); 0: stand-still
+  /// or creeping, the raw values are kept but are not slips an ECU should act on
+  std::int8_t slip_valid = 1;
 };
 
 struct UnitReport {

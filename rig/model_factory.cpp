@@ -1,5 +1,8 @@
 #include "rig/model_factory.h"
 
+#include <cmath>
+#include <iostream>
+
 #include "model/combination/combination.h"
 #include "model/paper/quarter_car_model.h"
 #include "model/vehicle/vehicle_model.h"
@@ -10,13 +13,23 @@
 namespace rig {
 namespace {
 
-/// A VehicleModel at step h, at rest or at the initial speed.
+/// A VehicleModel at step h, in equilibrium at rest or at the initial speed; the throttle that
+/// holds that speed is reported (a driver or ECU that wants the steady state feeds it).
 std::unique_ptr<model::SteppedModel> make_vehicle_model(
-    const io::config::VehicleModelSettings& settings, bool assist_input, double step_s) {
+    const io::config::VehicleModelSettings& settings, bool assist_input, double step_s,
+    int gear_request) {
   model::vehicle::VehicleParams params = settings.params;
   params.steering.assist_from_input = assist_input;
   auto m = std::make_unique<model::vehicle::VehicleModel>(params, step_s);
-  if (settings.initial_speed_mps != 0) m->set_forward_speed(settings.initial_speed_mps);
+  const double v = settings.initial_speed_mps;
+  const model::vehicle::VehicleModel::Equilibrium e = m->settle(v, gear_request);
+  if (v != 0) {
+    std::cerr << "rig: initial speed " << v << " m/s: steady state in gear " << e.gear
+              << ", throttle " << e.throttle << " holds it";
+    if (std::abs(e.residual_ax_mps2) > 0.01)
+      std::cerr << " (not quite: a_x " << e.residual_ax_mps2 << " m/s^2 left at that throttle)";
+    std::cerr << "\n";
+  }
   return m;
 }
 
@@ -36,12 +49,21 @@ std::unique_ptr<model::SteppedModel> make_combination_model(
   return m;
 }
 
+/// The gear the run's driver asks for at t = 0 (99, automatic, without one).
+int first_gear_request(const RigConfig& config) {
+  model::Signals first{};
+  if (auto d = make_driver(config)) d->update(0.0, first);
+  const auto i = model::index(model::Signal::kGearRequest);
+  if (!first.valid[i] || !std::isfinite(first.value[i])) return 99;
+  return static_cast<int>(std::lround(first.value[i]));
+}
+
 }  // namespace
 
 std::unique_ptr<model::SteppedModel> make_model(const RigConfig& config) {
   if (config.model.kind == "vehicle") {
     return make_vehicle_model(*config.model.vehicle, config.routing.assist_from_input,
-                              config.rig.period_s);
+                              config.rig.period_s, first_gear_request(config));
   }
   if (config.model.kind == "combination") {
     return make_combination_model(*config.model.combination, config.routing.assist_from_input,

@@ -46,6 +46,8 @@ TireParams read_tire(StrictTable t) {
   tire.spin_inertia_kgm2 = t.number_in("spin_inertia_kgm2", 1e-3, 1e3);
   p.rolling_resistance = t.number_in("rolling_resistance", 0.01, 0, 0.1);
   p.velocity_floor_mps = t.number_in("velocity_floor_mps", 0.01, 1e-4, 1);
+  p.low_speed_damping_ratio = t.number_in("low_speed_damping_ratio", 1.0, 0, 10);
+  p.low_speed_damping_speed_mps = t.number_in("low_speed_damping_speed_mps", 1.0, 0.01, 10);
   t.finish();
   return tire;
 }
@@ -242,6 +244,7 @@ VehicleModelSettings read_vehicle_model(StrictTable& m) {
   v.params = load_vehicle_file(m.existing_path("vehicle"));
   v.params.road = read_road(m);
   v.initial_speed_mps = m.number_in("initial_speed_mps", 0.0, -100, 100);
+  v.params.slip_mask_speed_mps = m.number_in("slip_mask_speed_mps", 0.5, 0, 10);
   return v;
 }
 

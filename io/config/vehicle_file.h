@@ -20,7 +20,8 @@ model::road::RoadParams read_road(StrictTable& model_table);
 
 /// The vehicle keys of a rig configuration's [model] table (kind = "vehicle"):
 ///   vehicle = "../vehicles/sedan.toml"   (relative to the configuration file)
-///   road_grade, road_bank (tan of the slopes), road_friction (mu), initial_speed_mps.
+///   road_grade, road_bank (tan of the slopes), road_friction (mu), initial_speed_mps,
+///   slip_mask_speed_mps (VehicleParams).
 struct VehicleModelSettings {
   model::vehicle::VehicleParams params;
   double initial_speed_mps = 0;

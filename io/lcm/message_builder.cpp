@@ -67,12 +67,14 @@ void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg) {
   msg.num_wheels = static_cast<std::int32_t>(wheels);
   resize(msg.wheel_unit, wheels);
   size_arrays<Fields::kWheel>(msg, wheels);
+  size_arrays<Fields::kWheelFlag>(msg, wheels);
   std::size_t k = 0;
   for (std::size_t u = 0; u < nu; ++u) {
     const auto& unit = r.units[u];
     for (std::size_t w = 0; w < wheel_count(unit); ++w, ++k) {
       msg.wheel_unit[k] = static_cast<std::int8_t>(u);
       set_elements<Fields::kWheel>(msg, k, unit.wheels[w]);
+      set_elements<Fields::kWheelFlag>(msg, k, unit.wheels[w]);
     }
   }
 

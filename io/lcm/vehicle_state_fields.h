@@ -70,6 +70,11 @@ struct VehicleStateFields {
       {"wheel_tire_load_n", "N", member<&W::tire_load_n>, &S::wheel_tire_load_n},
   };
 
+  /// Per wheel, flags: 1 valid, 0 not.
+  static constexpr ArrayField<S, W, std::int8_t> kWheelFlag[] = {
+      {"wheel_slip_valid", "1", member<&W::slip_valid>, &S::wheel_slip_valid},
+  };
+
   /// Once per message: steering, drive train, the first unit's brake pressures.
   static constexpr ScalarField<S, R> kVehicle[] = {
       {"steering_wheel_angle_rad", "rad", member<&R::steering, &Steering::wheel_angle_rad>,

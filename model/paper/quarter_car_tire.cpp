@@ -13,8 +13,10 @@ tire::TireContact QuarterCarTire::contact(double speed_mps, double spin_radps) c
   tire::TireContact c;
   c.characteristic = characteristic_;
   c.kinematics = {speed_mps, 0.0, spin_radps, radius_m_};
-  c.f_per_slip =
-      tire::slip_of(characteristic_, c.kinematics, params_.velocity_floor_mps).f_per_slip;
+  const tire::TireSlip slip =
+      tire::slip_of(characteristic_, c.kinematics, params_.velocity_floor_mps);
+  c.f_per_slip = slip.f_per_slip;
+  c.sliding_ratio = slip.sliding_ratio;
   return c;
 }
 
@@ -23,7 +25,7 @@ TireLongitudinalState QuarterCarTire::evaluate(double x_e, double v, double w) c
   const Eigen::Vector2d s(x_e, 0.0);
   const tire::DeflectionDynamics d =
       tire::deflection_dynamics(params_, characteristic_, c.kinematics, c.f_per_slip, s);
-  const tire::TireForces f = tire::limited_forces(params_, characteristic_, s, d);
+  const tire::TireForces f = tire::limited_forces(params_, characteristic_, c.sliding_ratio, s, d);
   TireLongitudinalState st;
   st.force_n = f.long_force_n;
   st.limited = f.limited;

@@ -97,6 +97,13 @@ inline Dual<N> sqrt(const Dual<N>& a) {
   return r;
 }
 template <int N>
+inline Dual<N> cos(const Dual<N>& a) {
+  Dual<N> r(std::cos(a.v));
+  const double k = -std::sin(a.v);
+  for (int i = 0; i < N; ++i) r.d[i] = a.d[i] * k;
+  return r;
+}
+template <int N>
 constexpr Dual<N> abs(const Dual<N>& a) {
   return a.v < 0.0 ? -a : a;
 }

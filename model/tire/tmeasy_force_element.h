@@ -32,9 +32,10 @@ class TmeasyForceElement final : public solver::ForceElement<2> {
     df_ds << r.d_rate_d_deflection(0), 0, 0, r.d_rate_d_deflection(1);
     return true;
   }
-  /// Eq. (26) after the update: the spring force stays within the ellipse of the maxima.
+  /// Eq. (26) after the update: the spring force stays within the ellipse of the maxima (times
+  /// the sliding ratio of the step's slip).
   void after_update(Vector& s) noexcept override {
-    limit_deflection(params_, contact_.characteristic, s);
+    limit_deflection(params_, contact_.characteristic, contact_.sliding_ratio, s);
   }
 
  private:

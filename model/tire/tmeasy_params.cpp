@@ -45,6 +45,8 @@ const char* check_params(const TmeasyParams& p) noexcept {
   if (!(p.vertical_stiffness_npm > 0 && p.vertical_damping_nspm >= 0))
     return "vertical_stiffness_npm > 0 and vertical_damping_nspm >= 0 required";
   if (!(p.velocity_floor_mps > 0)) return "velocity_floor_mps: v_N must be > 0";
+  if (!(p.low_speed_damping_ratio >= 0)) return "low_speed_damping_ratio: zeta_low must be >= 0";
+  if (!(p.low_speed_damping_speed_mps > 0)) return "low_speed_damping_speed_mps: v_low must be > 0";
   const TmeasyTrail& t = p.trail;
   if (!(t.zero_slip_nominal > 0 && t.end_slip_nominal > t.zero_slip_nominal &&
         t.zero_slip_double > 0 && t.end_slip_double > t.zero_slip_double))

@@ -48,6 +48,15 @@ struct TmeasyParams {
   double vertical_stiffness_npm = 200e3;      ///< c_z [N/m]
   double vertical_damping_nspm = 50.0;        ///< d_z [N s/m] (small; not in the issue's table)
   double velocity_floor_mps = 0.5;  ///< v_N, the artificial velocity of eqs. (14-15) [m/s]
+  /// Low-speed damping of the contact patch: below v_low the deflection's damping grows by
+  /// d_low = 2 zeta_low sqrt(c F_z / g) (per direction, F_z/g the mass the tire carries) with the
+  /// weight (1 + cos(pi |v_x| / v_low)) / 2. At stand-still the contact-patch rubber's hysteresis
+  /// and the wheel's fore-aft bushings damp the car's rocking on its tire springs (3-4 Hz for a
+  /// sedan), which d_x alone (zeta ~ 0.03) leaves ringing for seconds; tire models add such a
+  /// term for the same reason (e.g. Pacejka, Tire and Vehicle Dynamics, 3rd ed. 2012, the
+  /// low-speed correction of the transient contact model). 0 switches it off.
+  double low_speed_damping_ratio = 1.0;      ///< zeta_low [-]
+  double low_speed_damping_speed_mps = 1.0;  ///< v_low [m/s]
 };
 
 /// The issue's default 215/55 R18 passenger tire (public TMeasy data set): exactly the issue-3

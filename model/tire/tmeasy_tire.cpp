@@ -40,8 +40,12 @@ double trail_over_length(double n0, double sy0, double syE, double sy) noexcept 
 
 using D3 = internal::Dual<3>;  // derivative slots: v_x, v_y, omega
 
-/// f(s) of eq. (16) in dual numbers (f_per_slip_of's formula).
-D3 f_per_slip_dual(const TireCharacteristic& c, const D3& slip_x, const D3& slip_y) noexcept {
+/// f(s) of eq. (16) and the sliding ratio kappa in dual numbers (slip_curve_value's formula).
+struct SlipCurveDual {
+  D3 f, sliding_ratio;
+};
+SlipCurveDual slip_curve_dual(const TireCharacteristic& c, const D3& slip_x,
+                              const D3& slip_y) noexcept {
   const D3 s = internal::sqrt(slip_x * slip_x + slip_y * slip_y);
   D3 cos_phi(1.0), sin_phi(0.0);
   if (s.v > 1e-12) {
@@ -55,8 +59,8 @@ D3 f_per_slip_dual(const TireCharacteristic& c, const D3& slip_x, const D3& slip
   const internal::CurveT<D3> k = internal::generalized_curve_t(
       constant(c.x), constant(c.y), internal::NormT<D3>{c.normalize_x, c.normalize_y}, cos_phi,
       sin_phi);
-  if (k.max_force_n.v <= 0.0 || k.initial_slope_n.v <= 0.0) return D3(0.0);
-  return internal::f_of_s_t(k, s);
+  if (k.max_force_n.v <= 0.0 || k.initial_slope_n.v <= 0.0) return {D3(0.0), D3(1.0)};
+  return {internal::f_of_s_t(k, s), internal::sliding_ratio_t(k, s)};
 }
 
 }  // namespace
@@ -70,23 +74,31 @@ TireForcePartials tire_force_partials(const TmeasyParams& p, const TireCharacter
   const D3 rolling = r * internal::abs(w);
   const D3 slip_speed_x = vx - r * w;
   // eqs. (14-17), (24), (22) as in slip_of, directional_dynamics and limited_forces
-  const D3 f = f_per_slip_dual(c, -slip_speed_x / (rolling * c.normalize_x + p.velocity_floor_mps),
-                               -vy / (rolling * c.normalize_y + p.velocity_floor_mps));
+  const SlipCurveDual curve =
+      slip_curve_dual(c, -slip_speed_x / (rolling * c.normalize_x + p.velocity_floor_mps),
+                      -vy / (rolling * c.normalize_y + p.velocity_floor_mps));
+  const D3& f = curve.f;
+  // the low-speed damping's weight (deflection_damping), moving with v_x
+  D3 weight(0.0);
+  if (std::abs(k.long_speed_mps) < p.low_speed_damping_speed_mps)
+    weight = 0.5 * (1.0 + internal::cos(3.14159265358979323846 * internal::abs(vx) /
+                                        p.low_speed_damping_speed_mps));
   const auto force = [&](const D3& slip_speed, double normalize, double deflection,
-                         double stiffness, double damping) {
+                         double stiffness, const D3& damping) {
     const D3 rs = rolling * normalize;
     const D3 rate = (-f * slip_speed - stiffness * deflection * rs) / (damping * rs + f + 1e-9);
     return stiffness * deflection + damping * rate;
   };
   D3 fx = force(slip_speed_x, c.normalize_x, s(0), p.longitudinal_stiffness_npm,
-                p.longitudinal_damping_nspm);
-  D3 fy = force(vy, c.normalize_y, s(1), p.lateral_stiffness_npm, p.lateral_damping_nspm);
+                p.longitudinal_damping_nspm + weight * c.low_speed_damping_x_nspm);
+  D3 fy = force(vy, c.normalize_y, s(1), p.lateral_stiffness_npm,
+                p.lateral_damping_nspm + weight * c.low_speed_damping_y_nspm);
   TireForcePartials out;
-  const double rho = ellipse_ratio(c, fx.v, fy.v);
+  const double rho = ellipse_ratio(c, fx.v, fy.v) / curve.sliding_ratio.v;
   if (rho == std::numeric_limits<double>::infinity()) return out;  // no force, no partials
-  if (rho > 1.0) {  // eq. (26): F^D / rho, rho of the duals
+  if (rho > 1.0) {  // eq. (26): F^D kappa / |F^D/F_M|, of the duals
     const D3 ux = fx / c.x.max_force_n, uy = fy / c.y.max_force_n;
-    const D3 rho_d = internal::sqrt(ux * ux + uy * uy);
+    const D3 rho_d = internal::sqrt(ux * ux + uy * uy) / curve.sliding_ratio;
     fx = fx / rho_d;
     fy = fy / rho_d;
   }
@@ -110,10 +122,21 @@ TireCharacteristic characteristic_at(const TmeasyParams& p, double load_n,
     c.normalize_x = n.x;
     c.normalize_y = n.y;
   }
+  // the low-speed damping at this load: zeta_low of the mass F_z / g on each tire spring
+  const double mass_kg = load_n / 9.80665;
+  c.low_speed_damping_x_nspm =
+      2.0 * p.low_speed_damping_ratio * std::sqrt(p.longitudinal_stiffness_npm * mass_kg);
+  c.low_speed_damping_y_nspm =
+      2.0 * p.low_speed_damping_ratio * std::sqrt(p.lateral_stiffness_npm * mass_kg);
   return c;
 }
 
 double f_per_slip_of(const TireCharacteristic& c, double slip_x, double slip_y) noexcept {
+  return slip_curve_value(c, slip_x, slip_y).f_per_slip;
+}
+
+SlipCurveValue slip_curve_value(const TireCharacteristic& c, double slip_x,
+                                double slip_y) noexcept {
   // sqrt without glibc hypot's overflow care (our magnitudes are far from it)
   const double s = std::sqrt(slip_x * slip_x + slip_y * slip_y);
   double cos_phi = 1.0, sin_phi = 0.0;  // s = 0: phi = 0, f(0) = dFx0 s^x
@@ -123,8 +146,9 @@ double f_per_slip_of(const TireCharacteristic& c, double slip_x, double slip_y) 
   }
   const TmeasyCurve k = generalized_curve(c.x, c.y, SlipNormalization{c.normalize_x, c.normalize_y},
                                           cos_phi, sin_phi);
-  if (k.max_force_n <= 0.0 || k.initial_slope_n <= 0.0) return 0.0;
-  return evaluate_characteristic(k, s).f_n;
+  if (k.max_force_n <= 0.0 || k.initial_slope_n <= 0.0) return {};
+  const double f = evaluate_characteristic(k, s).f_n;
+  return {f, s <= k.max_slip ? 1.0 : f * s / k.max_force_n};  // internal::sliding_ratio_t
 }
 
 TireSlip slip_of(const TireCharacteristic& c, const TireKinematics& k,
@@ -135,7 +159,9 @@ TireSlip slip_of(const TireCharacteristic& c, const TireKinematics& k,
   // eqs. (14-15)
   out.slip_x = -(k.long_speed_mps - r * k.spin_radps) / (rw * c.normalize_x + velocity_floor_mps);
   out.slip_y = -k.lat_speed_mps / (rw * c.normalize_y + velocity_floor_mps);
-  out.f_per_slip = f_per_slip_of(c, out.slip_x, out.slip_y);
+  const SlipCurveValue v = slip_curve_value(c, out.slip_x, out.slip_y);
+  out.f_per_slip = v.f_per_slip;
+  out.sliding_ratio = v.sliding_ratio;
   return out;
 }
 

@@ -8,8 +8,11 @@
 ///   3. the first-order deflection dynamics (eqs. 22-24) with f given (the caller chooses the f of
 ///      the start of the step for the force element's rate, or the newest for the forces):
 ///      deflection_rates(), tire_forces(), damping_paths(), and the stick-slip limit of eq. (26):
-///      ONE elliptic limit on the combined force |(F_x/F_xM, F_y/F_yM)| <= 1, applied to the
-///      dynamic force (tire_forces) and to the spring force of the state (limit_deflection).
+///      ONE elliptic limit on the combined force |(F_x/F_xM, F_y/F_yM)| <= kappa, applied to the
+///      dynamic force (tire_forces) and to the spring force of the state (limit_deflection);
+///      kappa = F(s)/F_M (the sliding ratio, 1 up to s_M) lets a sliding tire transmit the
+///      characteristic's F(s) -> F_S instead of F_M, while at stand-still (s -> 0) the stick-slip
+///      hold keeps the full F_M.
 /// Frames: the wheel's ground frame at the contact point (x along the wheel heading in the road
 /// plane, y lateral to the left, z along the road normal); F_x > 0 drives forward.
 /// Everything is allocation-free and noexcept; the per-evaluation functions are inline so that
@@ -28,10 +31,12 @@ namespace rig::model::tire {
 /// load law, mu/mu0 scaling F_M, F_S, s_M, s_S) and the normalizing factors s^x, s^y of
 /// eqs. (14-15). Lift-off (F_z <= 0) gives zero curves, s^x = s^y = 1 and so f = 0.
 struct TireCharacteristic {
-  TmeasyCurve x{};         ///< longitudinal, at the load and friction
-  TmeasyCurve y{};         ///< lateral
-  double normalize_x = 1;  ///< s^x
-  double normalize_y = 1;  ///< s^y
+  TmeasyCurve x{};                      ///< longitudinal, at the load and friction
+  TmeasyCurve y{};                      ///< lateral
+  double normalize_x = 1;               ///< s^x
+  double normalize_y = 1;               ///< s^y
+  double low_speed_damping_x_nspm = 0;  ///< d_low of x at the load (TmeasyParams), at rest
+  double low_speed_damping_y_nspm = 0;  ///< d_low of y
 };
 
 /// What the tire sees of the wheel's motion: the contact point's velocity in the ground frame,
@@ -45,9 +50,10 @@ struct TireKinematics {
 
 /// Eqs. (14-17) at one kinematic state.
 struct TireSlip {
-  double slip_x = 0;      ///< s_x^N (normalized, eq. 14)
-  double slip_y = 0;      ///< s_y^N (eq. 15)
-  double f_per_slip = 0;  ///< f(s) = F(s)/s [N], f(0) = dF0 of the slip direction
+  double slip_x = 0;         ///< s_x^N (normalized, eq. 14)
+  double slip_y = 0;         ///< s_y^N (eq. 15)
+  double f_per_slip = 0;     ///< f(s) = F(s)/s [N], f(0) = dF0 of the slip direction
+  double sliding_ratio = 1;  ///< kappa = F(s)/F_M beyond s_M (F_S/F_M at full slide), else 1
 };
 
 /// What a force element needs of the tire for one step: its characteristic and kinematics at the
@@ -56,6 +62,7 @@ struct TireContact {
   TireCharacteristic characteristic{};
   TireKinematics kinematics{};
   double f_per_slip = 0;
+  double sliding_ratio = 1;  ///< kappa of that state (TireSlip)
 };
 
 /// The characteristic at load F_z [N] and road friction mu (stage 1). Beyond 2 F_zN the degressive
@@ -70,6 +77,13 @@ struct TireContact {
 /// F(s)/s of the combined characteristic for the normalized slips (eq. 16).
 [[nodiscard]] double f_per_slip_of(const TireCharacteristic& c, double slip_x,
                                    double slip_y) noexcept;
+/// f(s) and the sliding ratio kappa = F(s)/F_M of the combined characteristic.
+struct SlipCurveValue {
+  double f_per_slip = 0;
+  double sliding_ratio = 1;
+};
+[[nodiscard]] SlipCurveValue slip_curve_value(const TireCharacteristic& c, double slip_x,
+                                              double slip_y) noexcept;
 
 /// Steady-state forces of eqs. (16-17), F^S = f(s) s^N, at load F_z and friction mu (zero lifted
 /// off): the characteristic without deflection dynamics.
@@ -104,9 +118,31 @@ struct DirectionalDynamics {
           -stiffness_npm * rs / denom, damping_nspm * f_per_slip / denom};
 }
 
-/// directional_dynamics() of both directions at deflection s = (x_e, y_e), with f given.
+/// The weight (1 + cos(pi |v_x| / v_low)) / 2 of the low-speed damping: 1 at rest, 0 from v_low.
+[[nodiscard]] inline double low_speed_weight(const TmeasyParams& p,
+                                             double long_speed_mps) noexcept {
+  const double a = std::abs(long_speed_mps);
+  if (a >= p.low_speed_damping_speed_mps) return 0.0;
+  return 0.5 * (1.0 + std::cos(3.14159265358979323846 * a / p.low_speed_damping_speed_mps));
+}
+/// The deflection's damping d_x, d_y of eq. (22/24) with the low-speed part at v_x.
+struct DeflectionDamping {
+  double x_nspm = 0, y_nspm = 0;
+};
+[[nodiscard]] inline DeflectionDamping deflection_damping(const TmeasyParams& p,
+                                                          const TireCharacteristic& c,
+                                                          double long_speed_mps) noexcept {
+  const double w = low_speed_weight(p, long_speed_mps);
+  if (w == 0.0) return {p.longitudinal_damping_nspm, p.lateral_damping_nspm};
+  return {p.longitudinal_damping_nspm + w * c.low_speed_damping_x_nspm,
+          p.lateral_damping_nspm + w * c.low_speed_damping_y_nspm};
+}
+
+/// directional_dynamics() of both directions at deflection s = (x_e, y_e), with f given, and the
+/// damping d_x, d_y they used (the force's, eq. 22).
 struct DeflectionDynamics {
   DirectionalDynamics x{}, y{};
+  DeflectionDamping damping{};
 };
 [[nodiscard]] inline DeflectionDynamics deflection_dynamics(const TmeasyParams& p,
                                                             const TireCharacteristic& c,
@@ -114,11 +150,12 @@ struct DeflectionDynamics {
                                                             double f_per_slip,
                                                             const Eigen::Vector2d& s) noexcept {
   const double rolling = k.rolling_radius_m * std::abs(k.spin_radps);
+  const DeflectionDamping d = deflection_damping(p, c, k.long_speed_mps);
   return {directional_dynamics(s(0), k.long_speed_mps - k.rolling_radius_m * k.spin_radps, rolling,
-                               c.normalize_x, f_per_slip, p.longitudinal_stiffness_npm,
-                               p.longitudinal_damping_nspm),
+                               c.normalize_x, f_per_slip, p.longitudinal_stiffness_npm, d.x_nspm),
           directional_dynamics(s(1), k.lat_speed_mps, rolling, c.normalize_y, f_per_slip,
-                               p.lateral_stiffness_npm, p.lateral_damping_nspm)};
+                               p.lateral_stiffness_npm, d.y_nspm),
+          d};
 }
 
 /// x_e', y_e' and their diagonal derivative at deflection s = (x_e, y_e), with f given.
@@ -147,11 +184,13 @@ struct DeflectionRates {
 }
 
 /// Eq. (26) on the state, after the implicit update: a deflection whose spring force
-/// (c_x x_e, c_y y_e) lies outside the ellipse is scaled back onto it (no capacity: zero).
+/// (c_x x_e, c_y y_e) lies outside the ellipse, scaled by the sliding ratio kappa, is scaled back
+/// onto it (no capacity: zero).
 inline void limit_deflection(const TmeasyParams& p, const TireCharacteristic& c,
-                             Eigen::Vector2d& s) noexcept {
+                             double sliding_ratio, Eigen::Vector2d& s) noexcept {
   const double rho =
-      ellipse_ratio(c, p.longitudinal_stiffness_npm * s(0), p.lateral_stiffness_npm * s(1));
+      ellipse_ratio(c, p.longitudinal_stiffness_npm * s(0), p.lateral_stiffness_npm * s(1)) /
+      sliding_ratio;
   if (rho == std::numeric_limits<double>::infinity()) {
     s.setZero();
   } else if (rho > 1.0) {
@@ -161,7 +200,7 @@ inline void limit_deflection(const TmeasyParams& p, const TireCharacteristic& c,
 }
 
 /// The dynamic force F = c x_e + d x_e' (eq. 22 and its lateral twin) at deflection s with f
-/// given, limited by eq. (26): outside the ellipse it is scaled back onto it.
+/// given, limited by eq. (26): outside the ellipse (scaled by kappa) it is scaled back onto it.
 struct TireForces {
   double long_force_n = 0;
   double lat_force_n = 0;
@@ -169,12 +208,12 @@ struct TireForces {
 };
 /// The same from the deflection dynamics d of state s.
 [[nodiscard]] inline TireForces limited_forces(const TmeasyParams& p, const TireCharacteristic& c,
-                                               const Eigen::Vector2d& s,
+                                               double sliding_ratio, const Eigen::Vector2d& s,
                                                const DeflectionDynamics& d) noexcept {
   TireForces out;
-  out.long_force_n = p.longitudinal_stiffness_npm * s(0) + p.longitudinal_damping_nspm * d.x.rate;
-  out.lat_force_n = p.lateral_stiffness_npm * s(1) + p.lateral_damping_nspm * d.y.rate;
-  const double rho = ellipse_ratio(c, out.long_force_n, out.lat_force_n);
+  out.long_force_n = p.longitudinal_stiffness_npm * s(0) + d.damping.x_nspm * d.x.rate;
+  out.lat_force_n = p.lateral_stiffness_npm * s(1) + d.damping.y_nspm * d.y.rate;
+  const double rho = ellipse_ratio(c, out.long_force_n, out.lat_force_n) / sliding_ratio;
   if (rho == std::numeric_limits<double>::infinity()) {
     out = {0.0, 0.0, true};
   } else if (rho > 1.0) {
@@ -184,10 +223,13 @@ struct TireForces {
   }
   return out;
 }
+/// With the slip state's f and kappa (TireSlip or TireContact).
+template <class Slip>
 [[nodiscard]] inline TireForces tire_forces(const TmeasyParams& p, const TireCharacteristic& c,
-                                            const TireKinematics& k, double f_per_slip,
+                                            const TireKinematics& k, const Slip& slip,
                                             const Eigen::Vector2d& s) noexcept {
-  return limited_forces(p, c, s, deflection_dynamics(p, c, k, f_per_slip, s));
+  return limited_forces(p, c, slip.sliding_ratio, s,
+                        deflection_dynamics(p, c, k, slip.f_per_slip, s));
 }
 
 /// The stiff damping paths of eq. (24) at frozen f, the partials M_VI needs (method.md sec. 6):
@@ -224,12 +266,14 @@ struct SpinForce {
   double long_force_n = 0;
   double d_force_d_spin = 0;  ///< [N s]
 };
-[[nodiscard]] inline SpinForce spin_force(const TmeasyParams& p, const TireCharacteristic& c,
-                                          const TireKinematics& k, double f_per_slip,
+[[nodiscard]] inline SpinForce spin_force(const TmeasyParams& p, const TireContact& contact,
                                           const Eigen::Vector2d& s) noexcept {
-  const DeflectionDynamics d = deflection_dynamics(p, c, k, f_per_slip, s);
+  const TireCharacteristic& c = contact.characteristic;
+  const TireKinematics& k = contact.kinematics;
+  const DeflectionDynamics d = deflection_dynamics(p, c, k, contact.f_per_slip, s);
   // dF_x/dw = -r_D dF_x/dv_slip: the spin moves the slip speed v_x - r_D w
-  return {limited_forces(p, c, s, d).long_force_n, d.x.damping_nspm * k.rolling_radius_m};
+  return {limited_forces(p, c, contact.sliding_ratio, s, d).long_force_n,
+          d.x.damping_nspm * k.rolling_radius_m};
 }
 
 /// TMeasy's self-aligning torque M_z = -n F_y: the pneumatic trail n = (n/L) L over the contact

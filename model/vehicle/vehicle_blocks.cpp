@@ -84,8 +84,10 @@ void VehicleBlocks::update_contacts() noexcept {
                      tire::dynamic_rolling_radius(t.radius_unloaded_m, c.penetration_m)};
     tc.characteristic =
         tire::characteristic_at(t, w.load_n, framework_.road().friction(i % 2 == 1));
-    tc.f_per_slip =
-        tire::slip_of(tc.characteristic, tc.kinematics, t.velocity_floor_mps).f_per_slip;
+    const tire::TireSlip slip =
+        tire::slip_of(tc.characteristic, tc.kinematics, t.velocity_floor_mps);
+    tc.f_per_slip = slip.f_per_slip;
+    tc.sliding_ratio = slip.sliding_ratio;
   }
   work_.carrier_speed_radps = drivetrain_.carrier_speed_radps();
 }

@@ -142,8 +142,7 @@ WheelForces VehicleFramework::wheel_forces(const WheelContact& c, const Vector& 
   out.slip_x = slip.slip_x;
   out.slip_y = slip.slip_y;
   if (out.load_n > 0) {  // lifted off now: no tire force
-    const tire::TireForces f =
-        tire::tire_forces(t, ch, kin, slip.f_per_slip, state_.tire_deflection_m[k]);
+    const tire::TireForces f = tire::tire_forces(t, ch, kin, slip, state_.tire_deflection_m[k]);
     out.force_x_n = f.long_force_n;
     out.force_y_n = f.lat_force_n;
   }

@@ -108,6 +108,7 @@ void VehicleModel::write_outputs(Signals& s) const noexcept {
 
 void VehicleModel::fill_report(ModelReport& report) const noexcept {
   vehicle::fill_report(state_, inputs_, work_, report);
+  mark_slip_validity(p_.slip_mask_speed_mps, report.units[0]);
 }
 
 // ---- CouplableSystem: the sequential stepper's framework view ----

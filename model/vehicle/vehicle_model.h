@@ -74,6 +74,19 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   void reset(double x_m, double y_m, double yaw_rad) noexcept;
   /// Sets the forward speed (chassis, wheel spins, drive train consistent), for maneuver starts.
   void set_forward_speed(double speed_mps) noexcept;
+  /// The start in equilibrium (vehicle_equilibrium.cpp): relaxes every state but the pose to its
+  /// steady value - at rest the static suspension and tire deflections (settled with the brakes
+  /// holding, in neutral), at a forward speed the steady rolling state (wheel spins, tire
+  /// deflections, gear, engine and converter) with the chassis speed held and the throttle found
+  /// that holds it - then puts the vehicle back at its pose with the clock at 0. Allocation-free;
+  /// runs some thousand steps (construction time, before the loop).
+  struct Equilibrium {
+    double throttle = 0;          ///< the throttle that holds the speed (0 at rest) [0..1]
+    double residual_ax_mps2 = 0;  ///< a_x left at that throttle (non-zero: throttle at a bound)
+    int gear = 0;                 ///< the automatic's gear in it
+  };
+  /// gear_request: the gear the run starts in (99 automatic), used when rolling.
+  Equilibrium settle(double speed_mps, int gear_request = 99) noexcept;
 
  private:
   VehicleParams p_;

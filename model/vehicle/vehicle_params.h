@@ -140,6 +140,11 @@ struct VehicleParams {
   SteeringParams steering{};
   DrivetrainParams drivetrain{};
   road::RoadParams road{};
+  /// Below this speed (the larger of the contact point's |v_x| and r_D |w|) a wheel's slips are
+  /// reported invalid (WheelReport::slip_valid): TMeasy's slip divides by r_D|w| s + v_N (eqs.
+  /// 14-15), so at stand-still it reads the creep speed over v_N - tens to thousands - and
+  /// means the direction of a tiny motion, not a slip ratio [m/s].
+  double slip_mask_speed_mps = 0.5;
 };
 
 }  // namespace rig::model::vehicle

@@ -114,4 +114,13 @@ void fill_report(const VehicleState& state, const VehicleInputs& in, const Vehic
   report.joint_count = 0;
 }
 
+void mark_slip_validity(double mask_speed_mps, UnitReport& unit) noexcept {
+  for (int i = 0; i < unit.wheel_count; ++i) {
+    WheelReport& w = unit.wheels[static_cast<std::size_t>(i)];
+    const double speed =
+        std::max(std::abs(w.long_speed_mps), w.rolling_radius_m * std::abs(w.spin_radps));
+    w.slip_valid = speed >= mask_speed_mps ? 1 : 0;
+  }
+}
+
 }  // namespace rig::model::vehicle

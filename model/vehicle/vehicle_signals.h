@@ -20,6 +20,9 @@ void write_outputs(const VehicleState& state, const VehicleInputs& in, const Veh
                    Signals& s) noexcept;
 
 /// The first unit of the report (and the steering, drive train and brake pressures).
+/// WheelReport::slip_valid of every wheel: the wheel moves (max(|v_x|, r_D |w|)) at least
+/// mask_speed_mps (VehicleParams::slip_mask_speed_mps).
+void mark_slip_validity(double mask_speed_mps, UnitReport& unit) noexcept;
 void fill_report(const VehicleState& state, const VehicleInputs& in, const VehicleWorkspace& work,
                  ModelReport& report) noexcept;
 

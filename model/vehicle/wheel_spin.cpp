@@ -53,8 +53,7 @@ void WheelSpinStage::advance(double h) noexcept {
     const double r = contact.kinematics.rolling_radius_m;
     // F_x on the spin with the new deflection (limited as on the contact, eq. 26) and dF_x/dw
     // through the damping path (eq. 24, at the f of the start of the step)
-    const tire::SpinForce fx = tire::spin_force(tire, contact.characteristic, contact.kinematics,
-                                                contact.f_per_slip, state_.tire_deflection_m[k]);
+    const tire::SpinForce fx = tire::spin_force(tire, contact, state_.tire_deflection_m[k]);
     double inertia = axle.tire.spin_inertia_kgm2 + h * r * fx.d_force_d_spin;
     const double ts = driven_[k] ? shaft_torque : 0.0;
     if (driven_[k])

@@ -84,6 +84,7 @@ class VehicleStateCsv final : public ChannelCsv {
     h.emplace_back("num_wheels");
     for (std::size_t i = 0; i < wheels_; ++i) h.push_back(element_column("wheel_unit", i));
     add_array_headers(h, Fields::kWheel, wheels_);
+    add_array_headers(h, Fields::kWheelFlag, wheels_);
     add_scalar_headers(h, Fields::kVehicle);
     add_scalar_headers(h, Fields::kVehicleInt);
     h.emplace_back("num_joints");
@@ -109,6 +110,7 @@ class VehicleStateCsv final : public ChannelCsv {
     line.add(std::int64_t{msg_.num_wheels});
     for (std::size_t i = 0; i < wheels_; ++i) add_element(line, msg_.wheel_unit, i);
     add_array_cells(line, msg_, Fields::kWheel, wheels_);
+    add_array_cells(line, msg_, Fields::kWheelFlag, wheels_);
     add_scalar_cells(line, msg_, Fields::kVehicle);
     add_scalar_cells(line, msg_, Fields::kVehicleInt);
     line.add(std::int64_t{msg_.num_joints});

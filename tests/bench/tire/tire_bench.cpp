@@ -37,11 +37,11 @@ BENCHMARK(BM_TireSlip);
 void BM_TireForces(benchmark::State& state) {
   const tire::TmeasyParams p = tire::default_215_55_r18();
   const tire::TireCharacteristic c = tire::characteristic_at(p, kLoad, 1.0);
-  const double f = tire::slip_of(c, kCornering, p.velocity_floor_mps).f_per_slip;
+  const tire::TireSlip slip = tire::slip_of(c, kCornering, p.velocity_floor_mps);
   Eigen::Vector2d s(0.002, 0.003);
   for (auto _ : state) {
     benchmark::DoNotOptimize(s);
-    benchmark::DoNotOptimize(tire::tire_forces(p, c, kCornering, f, s));
+    benchmark::DoNotOptimize(tire::tire_forces(p, c, kCornering, slip, s));
     s(0) += 1e-12;  // keep the call from being hoisted
   }
 }

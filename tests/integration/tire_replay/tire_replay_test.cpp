@@ -47,8 +47,8 @@ model::tire::TireForces replayed(const model::tire::TmeasyParams& p, double fric
       model::tire::characteristic_at(p, m.wheel_tire_load_n[k], friction);
   const model::tire::TireKinematics kin{m.wheel_long_speed_mps[k], m.wheel_lat_speed_mps[k],
                                         m.wheel_spin_radps[k], m.wheel_rolling_radius_m[k]};
-  const double f = model::tire::slip_of(c, kin, p.velocity_floor_mps).f_per_slip;
-  return model::tire::tire_forces(p, c, kin, f,
+  const model::tire::TireSlip slip = model::tire::slip_of(c, kin, p.velocity_floor_mps);
+  return model::tire::tire_forces(p, c, kin, slip,
                                   Eigen::Vector2d(m.wheel_x_e_m[k], m.wheel_y_e_m[k]));
 }
 

@@ -45,6 +45,7 @@ TEST(VehicleStateFields, NamesAreUniqueInTheirGroupAndCarryTheirUnit) {
   ASSERT_EQ(names.size(), std::size(Fields::kFrame));
   expect_rows_named(Fields::kUnit, "unit", names);
   expect_rows_named(Fields::kWheel, "wheel", names);
+  expect_rows_named(Fields::kWheelFlag, "wheel", names);
   expect_rows_named(Fields::kJoint, "joint", names);
   expect_rows_named(Fields::kVehicle, "", names);
   expect_rows_named(Fields::kVehicleInt, "", names);
@@ -68,6 +69,13 @@ TEST(VehicleStateFields, TheBuilderFillsEveryRowFromItsSource) {
   }
   ASSERT_EQ(msg.num_wheels, 6);
   for (const auto& row : Fields::kWheel) {
+    ASSERT_EQ((msg.*row.lcm).size(), 6u) << row.name;
+    for (std::size_t k = 0; k < 6; ++k) {
+      const auto& wheel = r.units[k < 4 ? 0 : 1].wheels[k < 4 ? k : k - 4];
+      EXPECT_EQ((msg.*row.lcm)[k], row.source(wheel)) << row.name << " wheel " << k;
+    }
+  }
+  for (const auto& row : Fields::kWheelFlag) {
     ASSERT_EQ((msg.*row.lcm).size(), 6u) << row.name;
     for (std::size_t k = 0; k < 6; ++k) {
       const auto& wheel = r.units[k < 4 ? 0 : 1].wheels[k < 4 ? k : k - 4];

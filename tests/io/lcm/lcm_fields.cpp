@@ -45,6 +45,7 @@ int main() {
   for (const std::string_view name : Fields::kFrame) print("frame", name, "-", "-");
   print_rows("unit", Fields::kUnit);
   print_rows("wheel", Fields::kWheel);
+  print_rows("wheel", Fields::kWheelFlag);
   print_rows("vehicle", Fields::kVehicle);
   print_rows("vehicle", Fields::kVehicleInt);
   print_rows("joint", Fields::kJoint);

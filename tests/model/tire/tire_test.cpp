@@ -134,6 +134,7 @@ SteadyStateForces steady(const TireInput& in, const TmeasyParams& p = default_21
 struct Evaluation {
   TireCharacteristic characteristic;
   double f_per_slip = 0;
+  double sliding_ratio = 1;
   DeflectionDynamics dynamics;
   TireForces forces;
 };
@@ -141,9 +142,11 @@ Evaluation evaluate(const TireInput& in, const Eigen::Vector2d& s,
                     const TmeasyParams& p = default_215_55_r18()) {
   Evaluation e;
   e.characteristic = characteristic_at(p, in.load_n, in.friction);
-  e.f_per_slip = slip_of(e.characteristic, kinematics_of(in), p.velocity_floor_mps).f_per_slip;
+  const TireSlip slip = slip_of(e.characteristic, kinematics_of(in), p.velocity_floor_mps);
+  e.f_per_slip = slip.f_per_slip;
+  e.sliding_ratio = slip.sliding_ratio;
   e.dynamics = deflection_dynamics(p, e.characteristic, kinematics_of(in), e.f_per_slip, s);
-  e.forces = limited_forces(p, e.characteristic, s, e.dynamics);
+  e.forces = limited_forces(p, e.characteristic, e.sliding_ratio, s, e.dynamics);
   return e;
 }
 
@@ -231,19 +234,30 @@ TEST(TmeasyDynamics, LockedWheelSlidesWithTheContactPoint) {
   in.load_n = 3500;
   in.long_speed_mps = 0.5;
   in.lat_speed_mps = -0.3;
+  // the damping at v_x = 0.5 m/s: d_x plus half (weight (1 + cos(pi/2))/2) the low-speed
+  // damping 2 zeta sqrt(c_x F_z/g) = 2 sqrt(250e3 * 3500 / 9.80665) = 18,891.6 N s/m
+  const double d_x = 2000 + 0.5 * 2 * std::sqrt(250e3 * 3500 / 9.80665);
+  EXPECT_NEAR(d_x, 11445.9, 0.1);
   for (double xe : {0.0, 0.005}) {
     const Evaluation e = evaluate(in, {xe, 0.0});
-    EXPECT_NEAR(e.dynamics.x.rate, -0.5, 1e-12);                        // eq. (25): x_e' = -v_x
-    EXPECT_NEAR(e.dynamics.y.rate, 0.3, 1e-12);                         // y_e' = -v_y
-    EXPECT_NEAR(e.forces.long_force_n, 250e3 * xe - 2000 * 0.5, 1e-9);  // eq. (22)
+    EXPECT_NEAR(e.dynamics.x.rate, -0.5, 1e-12);  // eq. (25): x_e' = -v_x
+    EXPECT_NEAR(e.dynamics.y.rate, 0.3, 1e-12);   // y_e' = -v_y
+    EXPECT_NEAR(e.dynamics.damping.x_nspm, d_x, 1e-9);
+    // eq. (22) c x_e + d x_e' = (250e3 x_e - 5723, 0 + 0.3 d_y) lies beyond the ellipse: limited
+    EXPECT_TRUE(e.forces.limited);
   }
+  // without the low-speed damping: the paper's d_x
+  TmeasyParams bare = default_215_55_r18();
+  bare.low_speed_damping_ratio = 0;
+  EXPECT_NEAR(evaluate(in, {0.005, 0.0}, bare).forces.long_force_n, 250e3 * 0.005 - 2000 * 0.5,
+              1e-9);
 }
 
 TEST(TmeasyDynamics, EllipticLimiterHoldsTheCombinedForceOnTheEllipse) {
   const TmeasyParams p = default_215_55_r18();
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  int limited = 0;
+  int limited = 0, sliding = 0;
   for (int i = 0; i < 20000; ++i) {
     TireInput in;
     in.rolling_radius_m = kR;
@@ -257,20 +271,25 @@ TEST(TmeasyDynamics, EllipticLimiterHoldsTheCombinedForceOnTheEllipse) {
     const double fxm = e.characteristic.x.max_force_n, fym = e.characteristic.y.max_force_n;
     const double rho = std::hypot(e.forces.long_force_n / fxm, e.forces.lat_force_n / fym);
     ASSERT_LE(rho, 1 + 1e-12);  // eq. (26): never outside the ellipse of the maxima
+    ASSERT_LE(e.sliding_ratio, 1.0);
     if (e.forces.limited) {
       ++limited;
-      ASSERT_NEAR(rho, 1.0, 1e-12);  // on it, in the direction of the dynamic force
-      const double fx = 250e3 * s(0) + 2000 * e.dynamics.x.rate;
-      const double fy = 175e3 * s(1) + 1750 * e.dynamics.y.rate;
+      // on the ellipse scaled by kappa = F(s)/F_M, in the direction of the dynamic force
+      ASSERT_NEAR(rho, e.sliding_ratio, 1e-12);
+      if (e.sliding_ratio < 1.0) ++sliding;
+      const double fx = 250e3 * s(0) + e.dynamics.damping.x_nspm * e.dynamics.x.rate;
+      const double fy = 175e3 * s(1) + e.dynamics.damping.y_nspm * e.dynamics.y.rate;
       ASSERT_NEAR(e.forces.long_force_n * fy - e.forces.lat_force_n * fx, 0.0,
                   1e-9 * std::hypot(fx, fy) * fxm);
     }
     // the state's clamp: the spring force within the same ellipse
     Eigen::Vector2d clamped = s;
-    limit_deflection(p, e.characteristic, clamped);
-    ASSERT_LE(std::hypot(250e3 * clamped(0) / fxm, 175e3 * clamped(1) / fym), 1 + 1e-12);
+    limit_deflection(p, e.characteristic, e.sliding_ratio, clamped);
+    ASSERT_LE(std::hypot(250e3 * clamped(0) / fxm, 175e3 * clamped(1) / fym),
+              e.sliding_ratio + 1e-12);
   }
   EXPECT_GT(limited, 1000);  // the sample does exercise the limiter
+  EXPECT_GT(sliding, 100);   // ... and its sliding part
   // pure longitudinal slip: the paper's clamp. A deflection whose spring force exceeds
   // F_xM = 3900 N at 3500 N gives F = F_xM sign(x_e)
   TireInput rest;
@@ -279,21 +298,25 @@ TEST(TmeasyDynamics, EllipticLimiterHoldsTheCombinedForceOnTheEllipse) {
   Evaluation e = evaluate(rest, {-0.02, 0.0});
   EXPECT_TRUE(e.forces.limited);
   EXPECT_DOUBLE_EQ(e.forces.long_force_n, -3900.0);
-  // a wheel locking at 3 m/s with a small opposite deflection: F^D = 250 - 6000 N is limited
-  // to -F_xM (the force keeps its direction; it does not flip to sign(x_e))
+  // a wheel locked at 3 m/s (s_x = 3/v_N = 6, beyond s_S: full slide) with a small opposite
+  // deflection: F^D = 250 - 6000 N is limited to the sliding force -F_xS = -0.9 F_xM = -3510 N
+  // (the force keeps its direction; it does not flip to sign(x_e))
   rest.long_speed_mps = 3.0;
   e = evaluate(rest, {0.001, 0.0});
   EXPECT_TRUE(e.forces.limited);
-  EXPECT_DOUBLE_EQ(e.forces.long_force_n, -3900.0);
+  EXPECT_DOUBLE_EQ(e.sliding_ratio, 0.9);
+  EXPECT_NEAR(e.forces.long_force_n, -3510.0, 1e-9);
   // the clamp of eq. (26) on the state: beyond both maxima, scaled back onto the ellipse along
   // its own direction (pure: |x_e| = F_xM/c_x)
   Eigen::Vector2d c(-0.02, 0.05);
-  limit_deflection(p, e.characteristic, c);
+  limit_deflection(p, e.characteristic, 1.0, c);
   EXPECT_NEAR(std::hypot(250e3 * c(0) / 3900.0, 175e3 * c(1) / 3650.0), 1.0, 1e-15);
   EXPECT_NEAR(c(1) / c(0), 0.05 / -0.02, 1e-12);
   Eigen::Vector2d pure(-0.02, 0.0);
-  limit_deflection(p, e.characteristic, pure);
+  limit_deflection(p, e.characteristic, 1.0, pure);
   EXPECT_DOUBLE_EQ(pure(0), -3900.0 / 250e3);
+  limit_deflection(p, e.characteristic, e.sliding_ratio, pure);  // sliding: |x_e| = F_xS/c_x
+  EXPECT_DOUBLE_EQ(pure(0), -3510.0 / 250e3);
 }
 
 TEST(TmeasyDynamics, SteadyStateOfTheDeflectionDynamicsMatchesEq16UpToVn) {
@@ -330,10 +353,13 @@ constexpr PartialsCase kPartialsCases[] = {
 // The partials the solver uses are those of eq. (24) at frozen f (the stiff damping path,
 // method.md sec. 6): central differences with f held fixed must give them exactly.
 TEST(TmeasyDynamics, PartialsAtFrozenFMatchFiniteDifferences) {
-  const TmeasyParams p = default_215_55_r18();
+  // the low-speed damping's weight moves with v_x and is frozen like f: off here, and its
+  // damping path checked by hand below
+  TmeasyParams p = default_215_55_r18();
+  p.low_speed_damping_ratio = 0;
   for (const PartialsCase& c : kPartialsCases) {
     const TireInput in{c.vx, c.vy, c.w, kR, c.fz, 1.0};
-    const Evaluation e = evaluate(in, {c.xe, c.ye});
+    const Evaluation e = evaluate(in, {c.xe, c.ye}, p);
     if (e.forces.limited) continue;  // the frozen-f paths of the unlimited force
     const TireKinematics k = kinematics_of(in);
     const auto at = [&](TireKinematics kk, Eigen::Vector2d s) {
@@ -364,13 +390,24 @@ TEST(TmeasyDynamics, PartialsAtFrozenFMatchFiniteDifferences) {
     EXPECT_NEAR(fd_rate, e.dynamics.x.d_rate_d_deflection,
                 1e-5 * (1 + std::abs(e.dynamics.x.d_rate_d_deflection)));
     // the spin stage's dF_x/dw = r dF_x/dv_slip, and damping_paths() gives the same paths
-    const SpinForce sf = spin_force(p, e.characteristic, k, e.f_per_slip, {c.xe, c.ye});
+    const SpinForce sf = spin_force(
+        p, TireContact{e.characteristic, k, e.f_per_slip, e.sliding_ratio}, {c.xe, c.ye});
     EXPECT_DOUBLE_EQ(sf.d_force_d_spin, e.dynamics.x.damping_nspm * kR);
     EXPECT_DOUBLE_EQ(sf.long_force_n, e.forces.long_force_n);
     const DampingPaths paths = damping_paths(p, e.characteristic, k, e.f_per_slip);
     EXPECT_EQ(paths.long_nspm, e.dynamics.x.damping_nspm);
     EXPECT_EQ(paths.lat_nspm, e.dynamics.y.damping_nspm);
   }
+  // with the low-speed damping near stand-still (v_x = 0.05 m/s, w = 0.1 rad/s): the path is
+  // d f / (d r|w| s^x + f) with d = d_x + w_low d_low, w_low = (1 + cos(0.05 pi))/2
+  const TmeasyParams q = default_215_55_r18();
+  const TireInput in{0.05, 0.01, 0.1, kR, 3500, 1.0};
+  const Evaluation e = evaluate(in, {0.002, 0.001}, q);
+  const double d =
+      2000 + 0.5 * (1 + std::cos(0.05 * 3.14159265358979)) * 2 * std::sqrt(250e3 * 3500 / 9.80665);
+  const double rs = kR * 0.1 * e.characteristic.normalize_x;
+  EXPECT_NEAR(e.dynamics.damping.x_nspm, d, 1e-6);
+  EXPECT_NEAR(e.dynamics.x.damping_nspm, d * e.f_per_slip / (d * rs + e.f_per_slip), 1e-6);
 }
 
 // The complete partials (f moving with the slip, the limiter included) against central
@@ -382,8 +419,7 @@ TEST(TmeasyDynamics, CompletePartialsMatchFiniteDifferences) {
     const Eigen::Vector2d s(c.xe, c.ye);
     const TireKinematics k{c.vx, c.vy, c.w, kR};
     const auto forces = [&](TireKinematics kk) {
-      const double f = slip_of(ch, kk, p.velocity_floor_mps).f_per_slip;
-      const TireForces t = tire_forces(p, ch, kk, f, s);
+      const TireForces t = tire_forces(p, ch, kk, slip_of(ch, kk, p.velocity_floor_mps), s);
       return Eigen::Vector2d(t.long_force_n, t.lat_force_n);
     };
     const TireForcePartials a = tire_force_partials(p, ch, k, s);
@@ -420,7 +456,7 @@ TEST(TmeasyDynamics, LiftOffGivesNoForceAndNoDeflection) {
     EXPECT_NEAR(e.dynamics.y.rate, 175e3 / 1750 * 0.002, 1e-12);
     // and the state's clamp empties it at once: no capacity, no deflection
     Eigen::Vector2d s(0.004, -0.002);
-    limit_deflection(p, e.characteristic, s);
+    limit_deflection(p, e.characteristic, 1.0, s);
     EXPECT_EQ(s, Eigen::Vector2d::Zero());
     EXPECT_EQ(steady(in).long_force_n, 0.0);
   }
@@ -500,7 +536,9 @@ TireContact contact_at(const TmeasyParams& p, double load_n, const TireKinematic
   TireContact c;
   c.characteristic = characteristic_at(p, load_n, 1.0);
   c.kinematics = k;
-  c.f_per_slip = slip_of(c.characteristic, k, p.velocity_floor_mps).f_per_slip;
+  const TireSlip slip = slip_of(c.characteristic, k, p.velocity_floor_mps);
+  c.f_per_slip = slip.f_per_slip;
+  c.sliding_ratio = slip.sliding_ratio;
   return c;
 }
 
@@ -518,24 +556,35 @@ TEST(TmeasyForceElement, StepperHoldsAtRestAndFollowsALockedWheel) {
   EXPECT_EQ(allocations, 0u);
   EXPECT_EQ(s(0), 0.01);
   EXPECT_EQ(s(1), -0.004);
-  const TireForces held =
-      tire_forces(p, contact.characteristic, contact.kinematics, contact.f_per_slip, s);
+  const TireForces held = tire_forces(p, contact.characteristic, contact.kinematics, contact, s);
   EXPECT_DOUBLE_EQ(held.long_force_n, 2500.0);
   EXPECT_DOUBLE_EQ(held.lat_force_n, -700.0);
   EXPECT_FALSE(held.limited);
-  // locked wheel sliding at 0.2 m/s: x_e' = -v_x (eq. 25) until the spring force reaches
-  // F_xM = 3900 N at 3500 N, i.e. x_e = -F_xM/c_x = -0.0156 m, where eq. (26) holds it; the
-  // force c_x x_e + d_x x_e' = -3900 - 400 N is limited to -F_xM
-  contact = contact_at(p, 3500.0, {0.2, 0.0, 0.0, kRadius});
+  // locked wheel sliding at 0.15 m/s: x_e' = -v_x (eq. 25) until the spring force reaches
+  // F(s) = kappa F_xM at the slip s_x^N = 0.15/v_N = 0.3 (between s_M and s_S: the characteristic
+  // from its pieces), where eq. (26) holds it; the force c_x x_e + d_x x_e' = -F(s) - 300 N is
+  // limited to -F(s)
+  contact = contact_at(p, 3500.0, {0.15, 0.0, 0.0, kRadius});
+  const TmeasyCurve& cx = contact.characteristic.x;
+  const double slip_n = 0.15 / p.velocity_floor_mps;  // s_x^N; phi = 0: s_M -> s_xM / s^x
+  TmeasyCurve generalized = cx;
+  generalized.initial_slope_n *= contact.characteristic.normalize_x;
+  generalized.max_slip /= contact.characteristic.normalize_x;
+  generalized.slide_slip /= contact.characteristic.normalize_x;
+  ASSERT_GT(slip_n, generalized.max_slip);
+  ASSERT_LT(slip_n, generalized.slide_slip);
+  const double f_sliding = evaluate_characteristic(generalized, slip_n).force_n;
+  EXPECT_NEAR(contact.sliding_ratio, f_sliding / 3900.0, 1e-12);
+  EXPECT_LT(f_sliding, 3900.0);
+  EXPECT_GT(f_sliding, 3510.0);
   s.setZero();
   for (int k = 0; k < 10; ++k) stepper.advance(1e-3);
-  EXPECT_NEAR(s(0), -0.002, 1e-12);
+  EXPECT_NEAR(s(0), -0.0015, 1e-12);
   for (int k = 0; k < 200; ++k) stepper.advance(1e-3);
-  EXPECT_NEAR(s(0), -3900.0 / 250e3, 1e-12);
-  const TireForces sliding =
-      tire_forces(p, contact.characteristic, contact.kinematics, contact.f_per_slip, s);
+  EXPECT_NEAR(s(0), -f_sliding / 250e3, 1e-12);
+  const TireForces sliding = tire_forces(p, contact.characteristic, contact.kinematics, contact, s);
   EXPECT_TRUE(sliding.limited);
-  EXPECT_NEAR(sliding.long_force_n, -3900.0, 1e-9);
+  EXPECT_NEAR(sliding.long_force_n, -f_sliding, 1e-9);
 }
 
 TEST(TmeasyForceElement, RateJacobianMatchesFiniteDifferences) {
