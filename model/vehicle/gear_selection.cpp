@@ -3,12 +3,20 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/vehicle/drivetrain.h"
+
 namespace rig::model::vehicle {
 namespace {
 
 /// Share of a timed shift that is the torque phase (the handover between the clutches); the
 /// rest is the inertia phase (the on-coming clutch slips the turbine to the new speed).
 constexpr double kTorquePhaseShare = 0.25;
+
+/// In a power-on upshift the on-coming clutch passes the engine's torque plus what slows the
+/// engine down (J_e w_e'); the shift control cuts the engine torque for that, at most to its
+/// closed-throttle torque. Where that is not enough (part throttle), the inertia phase is
+/// stretched so that the clutch passes at most this much more than the engine's torque.
+constexpr double kInertiaLiftShare = 0.5;
 
 double lerp(double a, double b, double t) noexcept { return a + (b - a) * t; }
 
@@ -46,12 +54,22 @@ int automatic_gear(const DrivetrainParams& d, const VehicleInputs& in, double ca
 /// order keeps the slipping clutch dissipative: with power flowing to the wheels (engine
 /// faster than the turbine) an upshift hands the torque over first, a downshift first speeds
 /// the turbine up; coasting, the other way round.
-void begin_shift(const DrivetrainParams& d, int gear, double carrier_radps,
+void begin_shift(const DrivetrainParams& d, const VehicleInputs& in, int gear, double carrier_radps,
                  VehicleState& state) noexcept {
   const bool timed = d.shift_time_s > 0 && gear > 0 && state.gear > 0;
-  const bool power_on = state.drivetrain_z(0) > ratio_of(d, state.gear) * carrier_radps;
+  const double engine_radps = state.drivetrain_z(0);
+  const bool power_on = engine_radps > ratio_of(d, state.gear) * carrier_radps;
   state.shift_from_gear = timed ? state.gear : 0;
   state.shift_torque_first = (gear > state.gear) == power_on;
+  state.shift_inertia_s = (1 - kTorquePhaseShare) * d.shift_time_s;
+  if (timed && power_on && gear > state.gear) {
+    const double te = engine_torque_nm(d, in.throttle, engine_radps);
+    const double absorbable_nm =
+        te - engine_torque_nm(d, 0.0, engine_radps) + kInertiaLiftShare * std::max(te, 0.0);
+    const double drop_radps = (ratio_of(d, state.gear) - ratio_of(d, gear)) * carrier_radps;
+    state.shift_inertia_s = std::max(
+        state.shift_inertia_s, d.engine_inertia_kgm2 * drop_radps / std::max(absorbable_nm, 1.0));
+  }
   state.last_shift_s = state.time_s;
   state.gear = gear;
 }
@@ -64,7 +82,7 @@ Engagement engagement(const DrivetrainParams& d, const VehicleState& state) noex
   if (state.shift_from_gear == 0) return {r_new, r_new, 0};
   const double r_old = ratio_of(d, state.shift_from_gear);
   const double torque_s = kTorquePhaseShare * d.shift_time_s;
-  const double inertia_s = d.shift_time_s - torque_s;
+  const double inertia_s = state.shift_inertia_s;
   const double t = state.time_s - state.last_shift_s;
   if (state.shift_torque_first) {
     if (t < torque_s) return {r_old, lerp(r_old, r_new, t / torque_s), 0};
@@ -84,12 +102,13 @@ double ratio_of(const DrivetrainParams& d, int gear) noexcept {
 
 Engagement select_gear(const DrivetrainParams& d, const VehicleInputs& in,
                        double carrier_speed_radps, VehicleState& state) noexcept {
-  if (state.shift_from_gear != 0 && state.time_s - state.last_shift_s >= d.shift_time_s)
+  if (state.shift_from_gear != 0 && state.time_s - state.last_shift_s >=
+                                        kTorquePhaseShare * d.shift_time_s + state.shift_inertia_s)
     state.shift_from_gear = 0;  // the shift is through
   const int top = static_cast<int>(d.gear_ratios.size());
   const int gear = in.gear_request != 99 ? std::clamp(in.gear_request, -1, top)
                                          : automatic_gear(d, in, carrier_speed_radps, state);
-  if (gear != state.gear) begin_shift(d, gear, carrier_speed_radps, state);
+  if (gear != state.gear) begin_shift(d, in, gear, carrier_speed_radps, state);
   Engagement e = engagement(d, state);
   if (state.shift_torque_first)
     e.engine_torque_cut_nm =
