@@ -4,9 +4,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "io/config/vehicle_file.h"
 #include "model/vehicle/vehicle_model.h"
@@ -166,6 +172,46 @@ void expect_smooth_full_throttle_shifts(const VehicleParams& p, double seconds) 
 
 TEST(Drivetrain, FullThrottleShiftsWithoutJoltOrWheelSpin) {
   expect_smooth_full_throttle_shifts(sedan(), 20.0);
+}
+
+/// The sedan's file with `edit` applied to its text, written to a folder of this process.
+std::filesystem::path edited_sedan(const std::string& name,
+                                   const std::function<void(std::string&)>& edit) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("rig_drivetrain_test_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  std::ifstream in(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  edit(text);
+  const auto file = dir / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
+void erase_line(std::string& text, const std::string& key) {
+  const auto pos = text.find(key + " =");
+  text.erase(pos, text.find('\n', pos) - pos + 1);
+}
+
+TEST(DrivetrainConfig, ShiftKeysAreOptionalAndCheckedWithFileAndLine) {
+  // files without the new keys keep working: the defaults of DrivetrainParams
+  const VehicleParams old = io::config::load_vehicle_file(edited_sedan("old.toml", [](auto& t) {
+    erase_line(t, "shift_time_s");
+    erase_line(t, "upshift_hysteresis_radps");
+  }));
+  EXPECT_EQ(old.drivetrain.shift_time_s, DrivetrainParams{}.shift_time_s);
+  EXPECT_EQ(old.drivetrain.upshift_hysteresis_radps, DrivetrainParams{}.upshift_hysteresis_radps);
+  const auto file = edited_sedan("long_shift.toml", [](auto& t) {
+    erase_line(t, "shift_time_s");
+    t.insert(t.find("shift_dwell_s"), "shift_time_s = 2.0\n");
+  });
+  try {
+    (void)io::config::load_vehicle_file(file);
+    FAIL() << "no error";
+  } catch (const io::config::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("long_shift.toml:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("shift_time_s"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
