@@ -183,7 +183,7 @@ std::filesystem::path edited_sedan(const std::string& name,
   std::ifstream in(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   edit(text);
-  const auto file = dir / name;
+  auto file = dir / name;
   std::ofstream(file) << text;
   return file;
 }
