@@ -173,7 +173,12 @@ void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
   d.upshift_speed_low_radps = t.number_in("upshift_speed_low_radps", 10, 2000);
   d.upshift_speed_high_radps = t.number_in("upshift_speed_high_radps", 10, 2000);
   d.downshift_speed_radps = t.number_in("downshift_speed_radps", 10, 2000);
+  d.upshift_hysteresis_radps =
+      t.number_in("upshift_hysteresis_radps", d.upshift_hysteresis_radps, 0, 1000);
   d.shift_dwell_s = t.number_in("shift_dwell_s", 0, 10);
+  d.shift_time_s = t.number_in("shift_time_s", d.shift_time_s, 0, 5);
+  if (d.shift_time_s > d.shift_dwell_s)
+    throw t.error("shift_time_s", "must not exceed shift_dwell_s (a shift ends before the next)");
   t.finish();
 }
 

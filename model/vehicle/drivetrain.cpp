@@ -31,6 +31,18 @@ double engine_torque_nm(const DrivetrainParams& p, double throttle, double speed
   return thr * full - (1.0 - thr) * drag;
 }
 
+double delivered_engine_torque_nm(const DrivetrainParams& p, double throttle, double speed_radps,
+                                  double cut_nm) noexcept {
+  const double te = engine_torque_nm(p, throttle, speed_radps);
+  return std::max(te + cut_nm, std::min(te, engine_torque_nm(p, 0.0, speed_radps)));
+}
+
+double lockup_fraction(const DrivetrainParams& p, double turbine_radps) noexcept {
+  return std::clamp((std::abs(turbine_radps) - p.lockup_start_radps) /
+                        (p.lockup_full_radps - p.lockup_start_radps),
+                    0.0, 1.0);
+}
+
 Drivetrain::Drivetrain(const DrivetrainParams& p, VehicleState& state, const VehicleInputs& inputs,
                        const VehicleWorkspace& work, const HalfShafts* shafts)
     : p_(p), state_(state), inputs_(inputs), work_(work), shafts_(shafts) {}
@@ -41,26 +53,24 @@ void Drivetrain::mass_matrix(const Vector& y, Matrix& m) const noexcept {
 }
 
 double Drivetrain::coupling_torque_nm(double engine_radps, double carrier_radps) const noexcept {
-  if (work_.total_ratio == 0) return 0.0;
-  const double turbine = work_.total_ratio * carrier_radps;
-  const double slip = engine_radps - turbine;
-  const double lock = std::clamp(
-      (std::abs(turbine) - p_.lockup_start_radps) / (p_.lockup_full_radps - p_.lockup_start_radps),
-      0.0, 1.0);
-  return p_.converter_capacity_nms2 * std::abs(engine_radps) * slip +
-         lock * p_.lockup_damping_nms * slip;
+  if (work_.turbine_ratio == 0) return 0.0;
+  const double slip = engine_radps - work_.turbine_ratio * carrier_radps;
+  return (p_.converter_capacity_nms2 * std::abs(engine_radps) +
+          work_.lockup_fraction * p_.lockup_damping_nms) *
+         slip;
 }
 
 void Drivetrain::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
   (void)y;
-  const double te = engine_torque_nm(p_, inputs_.throttle, z(0));
+  const double te =
+      delivered_engine_torque_nm(p_, inputs_.throttle, z(0), work_.engine_torque_cut_nm);
   const double tc = coupling_torque_nm(z(0), z(1));
   double shafts = 0;
   if (shafts_ != nullptr) {
     shafts = shafts_->count() * shafts_->shaft_torque_nm(shafts_->state_const(), z(1));
   }
   q(0) = te - tc;
-  q(1) = p_.efficiency * work_.total_ratio * tc - shafts;
+  q(1) = p_.efficiency * work_.output_ratio * tc - shafts;
 }
 
 }  // namespace rig::model::vehicle

@@ -15,10 +15,21 @@ namespace rig::model::vehicle {
 /// Engine torque [N m] at throttle [0..1] and speed, with idle control and drag.
 double engine_torque_nm(const DrivetrainParams& p, double throttle, double speed_radps) noexcept;
 
+/// The engine's torque after the gearbox's reduction cut_nm (<= 0): down to the closed-throttle
+/// torque at most (a fuel cut).
+double delivered_engine_torque_nm(const DrivetrainParams& p, double throttle, double speed_radps,
+                                  double cut_nm) noexcept;
+
+/// Lock-up clutch engagement [0..1] at a turbine speed. Evaluated once per step from the step's
+/// start state (VehicleModel::begin_step) and frozen: as a function of w_t inside the step its
+/// slope times the slip makes dT_c/dw_t > 0 at large slip, an unstable mode (~5e4 1/s at a
+/// launch) that the linearised implicit Euler of eq. (8) turns over once h lambda > 1.
+double lockup_fraction(const DrivetrainParams& p, double turbine_radps) noexcept;
+
 class Drivetrain final : public solver::MechanicalBlock<2> {
  public:
   /// Its coordinates and speeds are state.drivetrain_y, drivetrain_z; it reads the throttle and
-  /// the engaged ratio (workspace).
+  /// the step's frozen ratios, lock-up fraction and torque cut (workspace).
   Drivetrain(const DrivetrainParams& p, VehicleState& state, const VehicleInputs& inputs,
              const VehicleWorkspace& work, const HalfShafts* shafts);
   [[nodiscard]] Eigen::Index size() const noexcept override { return 2; }

@@ -102,7 +102,8 @@ void VehicleBlocks::update_outputs() noexcept {
   work_.torsion_bar_torque_nm = tb;
   work_.assist_torque_nm = steering_.assist_torque_nm(tb);
   work_.engine_torque_nm =
-      engine_torque_nm(p_.drivetrain, inputs_.throttle, drivetrain_.engine_speed_radps());
+      delivered_engine_torque_nm(p_.drivetrain, inputs_.throttle, drivetrain_.engine_speed_radps(),
+                                 work_.engine_torque_cut_nm);
 }
 
 }  // namespace rig::model::vehicle

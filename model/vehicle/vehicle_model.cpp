@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/vehicle/drivetrain.h"
 #include "model/vehicle/gear_selection.h"
 #include "model/vehicle/vehicle_signals.h"
 
@@ -46,8 +47,8 @@ void VehicleModel::set_forward_speed(double speed_mps) noexcept {
   const DrivetrainParams& d = p_.drivetrain;
   state_.gear = gear_for_speed(d, work_.carrier_speed_radps);
   state_.last_shift_s = state_.time_s;
-  const double turbine = d.gear_ratios[static_cast<std::size_t>(state_.gear - 1)] *
-                         d.final_drive_ratio * work_.carrier_speed_radps;
+  state_.shift_from_gear = 0;
+  const double turbine = ratio_of(d, state_.gear) * work_.carrier_speed_radps;
   state_.drivetrain_z(0) = std::max(d.idle_speed_radps, turbine);
 }
 
@@ -70,7 +71,12 @@ void VehicleModel::set_inputs(const Signals& signals) noexcept {
 
 void VehicleModel::begin_step(double h) noexcept {
   saved_ = state_;
-  work_.total_ratio = select_gear(p_.drivetrain, inputs_, state_.drivetrain_z(1), state_);
+  // the drive train's step: ratios, lock-up and torque cut from the start state, frozen
+  const Engagement e = select_gear(p_.drivetrain, inputs_, state_.drivetrain_z(1), state_);
+  work_.turbine_ratio = e.turbine_ratio;
+  work_.output_ratio = e.output_ratio;
+  work_.engine_torque_cut_nm = e.engine_torque_cut_nm;
+  work_.lockup_fraction = lockup_fraction(p_.drivetrain, e.turbine_ratio * state_.drivetrain_z(1));
   blocks_->update_contacts();
   blocks_->sequence().begin_step(h);  // eq. (8) up to z^u = M_VI^-1 q of the framework (eq. 46)
 }

@@ -112,7 +112,14 @@ struct DrivetrainParams {
   double upshift_speed_low_radps = 220;   ///< engine speed for an upshift at zero throttle
   double upshift_speed_high_radps = 560;  ///< engine speed for an upshift at full throttle
   double downshift_speed_radps = 130;
-  double shift_dwell_s = 0.8;
+  /// An upshift needs the next gear's turbine speed this far above the downshift speed, so that
+  /// the shift cannot land at the downshift point (up/down hysteresis of the schedule).
+  double upshift_hysteresis_radps = 30;
+  double shift_dwell_s = 0.8;  ///< from the start of a shift to the next decision
+  /// Clutch-to-clutch shift between forward gears: a torque phase (1/4: the on-coming clutch
+  /// takes the torque over) and an inertia phase (3/4: it slips the turbine to the new speed);
+  /// 0: the ratio jumps.
+  double shift_time_s = 0.4;
 };
 
 /// Sprung mass (chassis) and aerodynamics.

@@ -33,6 +33,9 @@ void place_at_rest(VehicleState& s, const VehicleParams& params, double x_m, dou
   s.shaft_twist_rad.setZero();
   s.gear = 0;
   s.last_shift_s = -1e9;
+  s.shift_from_gear = 0;
+  s.shift_torque_first = true;
+  s.shift_inertia_s = 0;
   s.rack_at_wheel_m.fill(0);
   s.lateral_force_n.fill(0);
   s.acceleration_mps2.setZero();

@@ -33,8 +33,11 @@ struct VehicleState {
   std::array<Eigen::Vector2d, kMaxWheels> tire_deflection_m{};  ///< x_e, y_e (eqs. 22-24)
   Eigen::VectorXd shaft_twist_rad;                              ///< one per driven wheel
   // ---- discrete: the automatic gearbox ----
-  int gear = 0;
-  double last_shift_s = -1e9;
+  int gear = 0;                    ///< engaged, or being engaged during a shift
+  double last_shift_s = -1e9;      ///< start of the last shift
+  int shift_from_gear = 0;         ///< the gear being left while a timed shift runs, else 0
+  bool shift_torque_first = true;  ///< phase order: torque phase first (power-on upshift)
+  double shift_inertia_s = 0;      ///< the running shift's inertia phase (stretched at part load)
   // ---- quasi-static memory of the last step ----
   /// Rack travel at the wheel after the tie-rod compliance: where eq. (29) is evaluated next.
   std::array<double, kMaxWheels> rack_at_wheel_m{};

@@ -62,9 +62,15 @@ inline void set_wheel_orientation(WheelWork& w, double steer_rad, double camber_
 struct VehicleWorkspace {
   int wheel_count = 0;
   std::array<WheelWork, kMaxWheels> wheels{};
-  // drive train (gear selection; the wheel-spin stage for the carrier speed)
-  double total_ratio = 0;          ///< gear ratio x final drive (signed; 0 in neutral)
-  double carrier_speed_radps = 0;  ///< differential input speed in wheel units, newest
+  // drive train (VehicleModel::begin_step from the step's start state: frozen over the step;
+  // the wheel-spin stage for the carrier speed)
+  double turbine_ratio =
+      0;  ///< turbine speed / carrier speed: gear x final drive (signed; 0 neutral)
+  double output_ratio = 0;     ///< carrier torque / turbine torque (before efficiency); in a shift
+                               ///< it differs from turbine_ratio by the slipping clutch's share
+  double lockup_fraction = 0;  ///< lock-up clutch engagement [0..1]
+  double engine_torque_cut_nm = 0;  ///< the shift's engine torque reduction (inertia phase)
+  double carrier_speed_radps = 0;   ///< differential input speed in wheel units, newest
   // steering (the wheel-spin stage for the rack force; finish_step for the rest)
   double rack_force_n = 0;  ///< sum of the tie-rod forces on the rack
   double torsion_bar_torque_nm = 0;
