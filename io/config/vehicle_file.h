@@ -22,6 +22,7 @@ model::road::RoadParams read_road(StrictTable& model_table);
 ///   vehicle = "../vehicles/sedan.toml"   (relative to the configuration file)
 ///   road_grade, road_bank (tan of the slopes), road_friction (mu), initial_speed_mps.
 struct VehicleModelSettings {
+  std::filesystem::path file;  ///< the vehicle file (named in fault messages)
   model::vehicle::VehicleParams params;
   double initial_speed_mps = 0;
 };

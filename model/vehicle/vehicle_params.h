@@ -116,6 +116,9 @@ struct DrivetrainParams {
 };
 
 /// Sprung mass (chassis) and aerodynamics.
+/// At most this many [chassis] body_points_m (vehicle_faults.h checks them every step).
+inline constexpr int kMaxBodyPoints = 32;
+
 struct ChassisParams {
   double mass_kg = 1300;                                ///< sprung mass
   std::array<double, 3> inertia_kgm2{450, 1900, 2100};  ///< Ixx, Iyy, Izz about the CG
@@ -131,6 +134,20 @@ struct ChassisParams {
   double support_x_m = 0;
   double payload_n = 0;
   double payload_x_m = 0;
+  /// Points of the body (body axes, from the CG) that must stay above the road, checked after
+  /// every step (vehicle_faults.h). Empty: the corners of a box from the axles, the track and
+  /// the CG height (default_body_points). At most kMaxBodyPoints.
+  std::vector<std::array<double, 3>> body_points_m;
+};
+
+/// Limits beyond which a state is a vehicle fault (vehicle_faults.h); the rig sets them from
+/// [rig] fault_roll_limit_rad, fault_pitch_limit_rad, fault_speed_limit_mps,
+/// fault_rate_limit_radps.
+struct FaultLimits {
+  double roll_rad = 1.0;   ///< |roll|
+  double pitch_rad = 0.6;  ///< |pitch|
+  double speed_mps = 100;  ///< CG speed magnitude; a wheel's spin: this / its unloaded radius
+  double rate_radps = 10;  ///< angular rate magnitude (body axes)
 };
 
 struct VehicleParams {
@@ -140,6 +157,7 @@ struct VehicleParams {
   SteeringParams steering{};
   DrivetrainParams drivetrain{};
   road::RoadParams road{};
+  FaultLimits fault_limits{};
 };
 
 }  // namespace rig::model::vehicle
