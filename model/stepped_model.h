@@ -19,13 +19,13 @@ enum class StepStatus { kOk, kNonFinite, kVehicleFault };
 /// the caller's decision (the rig: [rig] on_vehicle_fault).
 enum class FaultKind : std::uint8_t {
   kNone,
-  kNonFinite,      ///< a NaN or infinity in the state (value NaN)
-  kSpeed,          ///< CG speed magnitude [m/s]
-  kRate,           ///< angular rate magnitude, body axes [rad/s]
-  kWheelSpin,      ///< |spin| of wheel `index` beyond speed limit / unloaded radius [rad/s]
-  kRoll,           ///< |roll| [rad]
-  kPitch,          ///< |pitch| [rad]
-  kBodyBelowRoad,  ///< body point `index` below the road: value = its height above it [m]
+  kNonFinite,   ///< a NaN or infinity in the state (value NaN)
+  kSpeed,       ///< CG speed magnitude [m/s]
+  kRate,        ///< angular rate magnitude, body axes [rad/s]
+  kWheelSpin,   ///< |spin| of wheel `index` beyond speed limit / unloaded radius [rad/s]
+  kRoll,        ///< |roll| [rad]
+  kPitch,       ///< |pitch| [rad]
+  kBodyGround,  ///< body point `index` below the road: value = its height above it [m]
 };
 
 /// One fault: plain data, copied by value.
@@ -38,7 +38,7 @@ struct ModelFault {
   double limit = 0;         ///< the limit it went beyond
 };
 
-/// "speed", "rate", "wheel_spin", "roll", "pitch", "body_below_road", "non_finite", "none".
+/// "speed", "rate", "wheel_spin", "roll", "pitch", "body_ground", "non_finite", "none".
 constexpr std::string_view fault_kind_name(FaultKind k) noexcept {
   switch (k) {
     case FaultKind::kNone:
@@ -55,8 +55,8 @@ constexpr std::string_view fault_kind_name(FaultKind k) noexcept {
       return "roll";
     case FaultKind::kPitch:
       return "pitch";
-    case FaultKind::kBodyBelowRoad:
-      return "body_below_road";
+    case FaultKind::kBodyGround:
+      return "body_ground";
   }
   return "?";
 }
@@ -66,7 +66,7 @@ constexpr std::string_view fault_value_unit(FaultKind k) noexcept {
   switch (k) {
     case FaultKind::kSpeed:
       return "m/s";
-    case FaultKind::kBodyBelowRoad:
+    case FaultKind::kBodyGround:
       return "m";
     case FaultKind::kRate:
     case FaultKind::kWheelSpin:

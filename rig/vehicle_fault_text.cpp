@@ -9,7 +9,7 @@ namespace {
 /// The point a fault's index names: a wheel or a body point ("" for the unit as a whole).
 const char* index_noun(model::FaultKind k) noexcept {
   if (k == model::FaultKind::kWheelSpin) return ", wheel ";
-  if (k == model::FaultKind::kBodyBelowRoad) return ", body point ";
+  if (k == model::FaultKind::kBodyGround) return ", body point ";
   return "";
 }
 
@@ -40,7 +40,7 @@ void format_vehicle_fault(const model::ModelFault& f, const char* unit_file, cha
   char what[96];
   if (f.kind == model::FaultKind::kNonFinite) {
     std::snprintf(what, sizeof what, "non-finite state (NaN/inf)");
-  } else if (f.kind == model::FaultKind::kBodyBelowRoad) {
+  } else if (f.kind == model::FaultKind::kBodyGround) {
     std::snprintf(what, sizeof what, "body below the road by %.4g m", -f.value);
   } else {
     std::snprintf(what, sizeof what, "%.*s %.6g %.*s beyond the limit %.6g %.*s",

@@ -97,7 +97,7 @@ ModelFault FaultCheck::check_body_points(const Eigen::VectorXd& y, double time_s
   for (int i = 0; i < point_count_; ++i) {
     const Vec3 p = cg + r * points_[static_cast<std::size_t>(i)];  // road frame
     const double height = p.z() - road_.height_m(p.x(), p.y());
-    if (height < 0) return fault(FaultKind::kBodyBelowRoad, i, time_s, height, 0);
+    if (height < 0) return fault(FaultKind::kBodyGround, i, time_s, height, 0);
   }
   return {};
 }

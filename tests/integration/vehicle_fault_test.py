@@ -5,7 +5,7 @@ usage: vehicle_fault_test.py RIG RIG_LOG2CSV SOURCE_DIR CASE
 
 stop       the sedan at 30 m/s braking with 300 bar: exit 1, the message names the fault, time,
            unit and file, the event log has "vehicle_fault", the summary its vehicle_fault object
-           (kind pitch or body_below_road), the last logged state within the limits. On this
+           (kind pitch or body_ground), the last logged state within the limits. On this
            main the sedan no longer flips (it dives to 0.055 rad and stops, wheels locked), so
            the pitch limit is 0.045 rad here: the dive is the fault.
 truck      the 3-axle truck at a period of 1 s: a fault, and no logged value beyond a limit.
@@ -102,7 +102,7 @@ def case_stop():
     sedan = os.path.join(VEHICLES, "sedan.toml")
     r, s, events, rows = run(config("stop.toml", f"fault_pitch_limit_rad = {DIVE_PITCH_LIMIT}"),
                              5.0, "stop")
-    f = check_fault(r, s, events, ("pitch", "body_below_road"), sedan)
+    f = check_fault(r, s, events, ("pitch", "body_ground"), sedan)
     check(s["stop_reason"] == "vehicle-fault", f"stop_reason {s['stop_reason']}")
     check(s["cycles"] < 5000, f"cycles {s['cycles']}: did not stop")
     check_rows_within_limits(rows, DIVE_PITCH_LIMIT)
@@ -129,7 +129,7 @@ def case_hold():
     sedan = os.path.join(VEHICLES, "sedan.toml")
     keys = f'on_vehicle_fault = "hold"\nfault_pitch_limit_rad = {DIVE_PITCH_LIMIT}'
     r, s, events, rows = run(config("hold.toml", keys), 5.0, "hold")
-    f = check_fault(r, s, events, ("pitch", "body_below_road"), sedan)
+    f = check_fault(r, s, events, ("pitch", "body_ground"), sedan)
     check(s["stop_reason"] == "duration", f"stop_reason {s['stop_reason']}")
     check(s["cycles"] == 5000 and len(rows) == 5000, f"cycles {s['cycles']}, rows {len(rows)}")
     check(s["outputs"] == {}, f"valid outputs after the fault: {s['outputs']}")

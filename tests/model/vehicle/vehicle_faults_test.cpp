@@ -81,7 +81,7 @@ TEST(VehicleFaults, EachKindOnAHandMadeState) {
   EXPECT_EQ(nan.kind, FaultKind::kNonFinite);
   // Sunk by 0.4 m: the floor points (wheel-centre height) are below the road, pitch is 0.
   const ModelFault sunk = kind_of([](VehicleState& s) { s.framework_y(2) -= 0.4; });
-  EXPECT_EQ(sunk.kind, FaultKind::kBodyBelowRoad);
+  EXPECT_EQ(sunk.kind, FaultKind::kBodyGround);
   EXPECT_LT(sunk.value, 0);
   EXPECT_GE(sunk.index, 0);
 }
@@ -111,7 +111,7 @@ TEST(VehicleFaults, SedanBraking300BarFaultsByPitchOrBodyBelowRoad) {
   const ModelFault f = m.last_fault();
   std::printf("sedan 300 bar: %s at t = %.3f s, value %.4f, limit %.4f, index %d\n",
               std::string(fault_kind_name(f.kind)).c_str(), f.time_s, f.value, f.limit, f.index);
-  EXPECT_TRUE(f.kind == FaultKind::kPitch || f.kind == FaultKind::kBodyBelowRoad)
+  EXPECT_TRUE(f.kind == FaultKind::kPitch || f.kind == FaultKind::kBodyGround)
       << fault_kind_name(f.kind);
   EXPECT_EQ(f.unit, 0);
   EXPECT_NEAR(m.time_s(), f.time_s - 1e-3, 1e-9);  // at the start of the failed step
