@@ -12,6 +12,8 @@ truck      the 3-axle truck at a period of 1 s: a fault, and no logged value bey
 hold       the same braking with on_vehicle_fault = "hold": the run completes its duration
            (every cycle counted and logged), model_valid 0 from the fault on, the state frozen,
            the summary's outputs empty (all invalid), exit 1 at the end.
+combination  the car and trailer with a roll limit of 0.01 rad: the fault names its unit (from 0)
+           and that unit's vehicle file.
 badconfig  bad values of the new keys are `file:line:` errors of `rig run` and `rig check`.
 """
 import csv
@@ -142,6 +144,25 @@ def case_hold():
     check(all(row["model_fault_kind"] != "0" for row in held), "model_fault_kind")
 
 
+def case_combination():
+    text = open(os.path.join(SRC, "config", "combinations", "car-trailer.toml")).read()
+    text = text.replace('vehicle = "../vehicles/', f'vehicle = "{VEHICLES}/')
+    text = text.replace("[rig]\n", "[rig]\nfault_roll_limit_rad = 0.01\n", 1)
+    cfg = os.path.join(TMP, "combination.toml")
+    open(cfg, "w").write(text)
+    r, s, events, rows = run(cfg, 20.0, "combination")
+    check(r.returncode == 1, f"exit {r.returncode}: {r.stderr}")
+    f = s.get("vehicle_fault")
+    check(f is not None and f["kind"] == "roll", f"vehicle_fault: {f}")
+    files = {0: os.path.join(VEHICLES, "sedan.toml"), 1: os.path.join(VEHICLES, "trailer-1axle.toml")}
+    check(f["unit"] in files and f["file"] == files[f["unit"]], f"unit {f['unit']} file {f['file']}")
+    check(f"unit {f['unit']} ({f['file']})" in r.stderr, f"message: {r.stderr!r}")
+    check(abs(f["value"]) > 0.01 and f["limit"] == 0.01, f"value {f['value']}")
+    u = f"unit{f['unit']}_roll_rad"
+    check(all(abs(float(row[u])) <= 0.01 for row in rows), f"{u} beyond the limit in the log")
+    print("fault:", json.dumps(f))
+
+
 def case_badconfig():
     cases = {
         "roll.toml": ("fault_roll_limit_rad = -1.0", r":2: \[rig\] fault_roll_limit_rad: must be"),
@@ -164,5 +185,6 @@ def case_badconfig():
           f"body points: {r.returncode} {r.stderr!r}")
 
 
-{"stop": case_stop, "truck": case_truck, "hold": case_hold, "badconfig": case_badconfig}[CASE]()
+{"stop": case_stop, "truck": case_truck, "hold": case_hold, "combination": case_combination,
+ "badconfig": case_badconfig}[CASE]()
 print("PASS", CASE)
