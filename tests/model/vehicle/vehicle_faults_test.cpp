@@ -58,7 +58,7 @@ TEST(VehicleFaults, EachKindOnAHandMadeState) {
   const VehicleParams p = load("sedan.toml");
   VehicleModel m(p, 1e-3);
   const FaultCheck check(p);
-  const VehicleState rest = m.state();
+  const VehicleState& rest = m.state();
   EXPECT_EQ(check.check(rest, 0.0).kind, FaultKind::kNone);
   const auto kind_of = [&](auto change) {
     VehicleState s = rest;
