@@ -78,6 +78,12 @@ struct ModelReport {
   std::array<double, 4> brake_pressure_pa{};  ///< FL, FR, RL, RR of the first unit
   std::int32_t joint_count = 0;
   std::array<JointReport, kMaxJoints> joints{};
+  // ---- validity (written by the rig's executive each cycle, not by the model) ----
+  /// 1: the model's current state; 0: after a vehicle fault, the last fault-free state (held
+  /// or stopped), every quantity above is then invalid.
+  std::int32_t valid = 1;
+  std::int32_t fault_kind = 0;   ///< model::FaultKind of the fault (0: none)
+  std::int32_t fault_unit = -1;  ///< its unit (-1: none, or the coupling of a combination)
 };
 
 }  // namespace rig::model

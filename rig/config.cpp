@@ -1,6 +1,7 @@
 #include "rig/config.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <string_view>
 
@@ -9,6 +10,23 @@
 
 namespace rig {
 namespace {
+
+/// A limit that must be finite and > 0.
+double positive(io::config::StrictTable& t, std::string_view key, double fallback) {
+  const double v = t.number(key, fallback);
+  if (!(v > 0) || !std::isfinite(v)) throw t.error(key, "must be finite and > 0");
+  return v;
+}
+
+/// The vehicle-fault keys of [rig] (model/vehicle/vehicle_faults.h).
+void read_vehicle_faults(io::config::StrictTable& t, RigSettings& s) {
+  auto& l = s.fault_limits;
+  l.roll_rad = positive(t, "fault_roll_limit_rad", l.roll_rad);
+  l.pitch_rad = positive(t, "fault_pitch_limit_rad", l.pitch_rad);
+  l.speed_mps = positive(t, "fault_speed_limit_mps", l.speed_mps);
+  l.rate_radps = positive(t, "fault_rate_limit_radps", l.rate_radps);
+  s.hold_on_vehicle_fault = t.choice("on_vehicle_fault", "stop", {"stop", "hold"}) == "hold";
+}
 
 RigSettings read_rig(io::config::StrictTable& t) {
   RigSettings s;
@@ -28,6 +46,7 @@ RigSettings read_rig(io::config::StrictTable& t) {
   s.policy = *overrun_policy_by_key(policy);
   s.abort_after = static_cast<int>(t.number_in("abort_after", 10, 1, 1e6));
   s.status_interval_s = t.number_in("status_interval_s", 5.0, 0.1, 3600.0);
+  read_vehicle_faults(t, s);
   t.finish();
   return s;
 }

@@ -29,6 +29,12 @@ struct RigSettings {
   OverrunPolicy policy = OverrunPolicy::kSkip;
   int abort_after = 10;            ///< consecutive misses for kAbortAfter
   double status_interval_s = 5.0;  ///< stderr / systemd STATUS summary interval
+  /// fault_roll_limit_rad, fault_pitch_limit_rad, fault_speed_limit_mps, fault_rate_limit_radps:
+  /// beyond them a vehicle's state is a fault (model/vehicle/vehicle_faults.h), every unit's.
+  model::vehicle::FaultLimits fault_limits{};
+  /// on_vehicle_fault: "stop" (exit 1) or "hold" (the model freezes at its last fault-free
+  /// state, its outputs flagged invalid, the loop and CAN keep running).
+  bool hold_on_vehicle_fault = false;
 };
 
 /// [model]

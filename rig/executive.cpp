@@ -3,8 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <string>
 
 #include "rig/rt/thread_setup.h"
+#include "rig/vehicle_fault_text.h"
 
 namespace rig {
 namespace {
@@ -39,6 +41,8 @@ const char* stop_reason_name(StopReason reason) {
       return "abort-after";
     case StopReason::kNonFinite:
       return "non-finite";
+    case StopReason::kVehicleFault:
+      return "vehicle-fault";
     case StopReason::kRtRefused:
       return "rt-refused";
   }
@@ -127,7 +131,7 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
   if (driver_ != nullptr) driver_->update(model_.time_s(), signals_);
   phases.end(io::Phase::kDriver);
   if (params_.stall_ms > 0 && loop.cycle == params_.stall_cycle) sleep_ms(params_.stall_ms);
-  const model::StepStatus status = model_.step(signals_);
+  const model::StepStatus status = step_model();
   const std::int64_t model_end_ns = phases.end(io::Phase::kModel);
   for (io::CycleIo* a : io_) a->transmit(model_end_ns, signals_);
   phases.end(io::Phase::kOutputs);
@@ -140,15 +144,50 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
   cycles_.store(++loop.cycle, std::memory_order_release);
   if (hook_ != nullptr) hook_->on_cycle(loop.cycle);
 
-  if (status == model::StepStatus::kNonFinite) {
-    char detail[160];
-    std::snprintf(detail, sizeof detail,
-                  "model step produced a non-finite value at cycle %llu, t = %.6f s; stopping",
-                  static_cast<unsigned long long>(t.cycle), t.sim_time_s);
-    log_.event(clock_.realtime_ns(), end_ns, "non_finite", detail);
-    return StopReason::kNonFinite;
+  if (status != model::StepStatus::kOk) {
+    if (const StopReason r = after_fault(status, t, end_ns); r != StopReason::kNone) return r;
   }
   return decision.action == OverrunAction::kAbort ? StopReason::kAbortAfter : StopReason::kNone;
+}
+
+/// The model phase: one step, unless a held fault froze the model. On a vehicle fault the
+/// model is at its last fault-free state and wrote no output: the outputs are flagged invalid
+/// (CAN sends a mapped `invalid` raw value, else the last valid one) for as long as it lasts.
+model::StepStatus Executive::step_model() noexcept {
+  if (held_) return model::StepStatus::kOk;
+  const model::StepStatus status = model_.step(signals_);
+  if (status == model::StepStatus::kOk) return status;
+  const model::ModelFault f = model_.last_fault();
+  if (f.kind == model::FaultKind::kNone) return status;  // no fault report (the quarter car)
+  fault_ = f;
+  for (std::size_t i = model::index(model::kFirstOutput); i < model::kSignalCount; ++i)
+    signals_.valid[i] = false;
+  held_ = params_.hold_on_vehicle_fault;
+  return model::StepStatus::kVehicleFault;
+}
+
+/// The event of a failed step, and whether the loop stops.
+StopReason Executive::after_fault(model::StepStatus status, const io::CycleTiming& t,
+                                  std::int64_t end_ns) noexcept {
+  char detail[400];
+  if (status == model::StepStatus::kVehicleFault) {
+    format_vehicle_fault(fault_, fault_unit_file().c_str(), detail, sizeof detail);
+    const std::size_t n = std::char_traits<char>::length(detail);
+    std::snprintf(detail + n, sizeof detail - n, "; %s", held_ ? "holding" : "stopping");
+    log_.event(clock_.realtime_ns(), end_ns, "vehicle_fault", detail);
+    return held_ ? StopReason::kNone : StopReason::kVehicleFault;
+  }
+  std::snprintf(detail, sizeof detail,
+                "model step produced a non-finite value at cycle %llu, t = %.6f s; stopping",
+                static_cast<unsigned long long>(t.cycle), t.sim_time_s);
+  log_.event(clock_.realtime_ns(), end_ns, "non_finite", detail);
+  return StopReason::kNonFinite;
+}
+
+const std::string& Executive::fault_unit_file() const noexcept {
+  static const std::string kNone;
+  const auto u = static_cast<std::size_t>(fault_.unit);
+  return fault_.unit >= 0 && u < params_.unit_files.size() ? params_.unit_files[u] : kNone;
 }
 
 /// The handoff phase: fills a snapshot, ends the phase, decides on the overrun once (so that the
@@ -159,6 +198,9 @@ OverrunDecision Executive::handoff(io::CycleTiming& t, PhaseTimer& phases,
   if (slot != nullptr) {
     slot->signals = signals_;
     model_.fill_report(slot->report);
+    slot->report.valid = fault_.kind == model::FaultKind::kNone ? 1 : 0;
+    slot->report.fault_kind = static_cast<std::int32_t>(fault_.kind);
+    slot->report.fault_unit = fault_.kind == model::FaultKind::kNone ? -1 : fault_.unit;
     read_io_counters(slot->can);
   }
   end_ns = phases.end(io::Phase::kHandoff);

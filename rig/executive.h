@@ -41,9 +41,21 @@ struct ExecutiveParams {
   std::size_t snapshot_capacity = 256;
   std::uint64_t stall_cycle = 0;  ///< test hook: stall this cycle's model phase ...
   std::int64_t stall_ms = 0;      ///< ... for this long (0: never)
+  /// A vehicle fault (model::SteppedModel::last_fault()) stops the loop (false), or freezes the
+  /// model at its last fault-free state, outputs flagged invalid, the loop going on (true).
+  bool hold_on_vehicle_fault = false;
+  std::vector<std::string> unit_files;  ///< the vehicle file of each unit, to name a fault's
 };
 
-enum class StopReason { kNone, kDuration, kRequested, kAbortAfter, kNonFinite, kRtRefused };
+enum class StopReason {
+  kNone,
+  kDuration,
+  kRequested,
+  kAbortAfter,
+  kNonFinite,
+  kVehicleFault,
+  kRtRefused
+};
 const char* stop_reason_name(StopReason reason);
 
 /// Test hook called on the loop thread at the end of every cycle.
@@ -113,6 +125,10 @@ class Executive {
   }
   /// After the loop stopped.
   [[nodiscard]] const model::Signals& signals() const noexcept { return signals_; }
+  /// The vehicle fault that stopped or froze the model (kind kNone: none), after the loop
+  /// stopped; and the vehicle file of its unit ("" for the coupling or a model without files).
+  [[nodiscard]] const model::ModelFault& vehicle_fault() const noexcept { return fault_; }
+  [[nodiscard]] const std::string& fault_unit_file() const noexcept;
   /// The counters of every I/O adapter, summed (io/io_counters.h).
   [[nodiscard]] io::IoCounters io_counters() const noexcept {
     io::IoCounters sum{};
@@ -126,6 +142,9 @@ class Executive {
  private:
   struct LoopState;
   StopReason cycle(LoopState& loop) noexcept;
+  model::StepStatus step_model() noexcept;
+  StopReason after_fault(model::StepStatus status, const io::CycleTiming& t,
+                         std::int64_t end_ns) noexcept;
   OverrunDecision handoff(io::CycleTiming& timing, PhaseTimer& phases,
                           std::int64_t& end_ns) noexcept;
   void record(const io::CycleTiming& timing, const OverrunDecision& decision,
@@ -150,6 +169,8 @@ class Executive {
   Dispatcher dispatcher_;
   std::uint32_t consecutive_misses_ = 0;  // loop thread
   std::int64_t start_ns_ = 0;             // loop thread
+  model::ModelFault fault_{};             // loop thread; read after it stopped
+  bool held_ = false;                     // loop thread: the model is frozen by a fault
 
   rt::LogHistogram lateness_;
   rt::LogHistogram compute_;

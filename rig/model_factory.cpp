@@ -13,16 +13,27 @@
 namespace rig {
 namespace {
 
+/// The gear the run's driver asks for at t = 0 (99, automatic, without one).
+int first_gear_request(const RigConfig& config) {
+  model::Signals first{};
+  if (auto d = make_driver(config)) d->update(0.0, first);
+  const auto i = model::index(model::Signal::kGearRequest);
+  if (!first.valid[i] || !std::isfinite(first.value[i])) return 99;
+  return static_cast<int>(std::lround(first.value[i]));
+}
+
 /// A VehicleModel at step h, in equilibrium at rest or at the initial speed; the throttle that
 /// holds that speed is reported (a driver or ECU that wants the steady state feeds it).
 std::unique_ptr<model::SteppedModel> make_vehicle_model(
-    const io::config::VehicleModelSettings& settings, bool assist_input, double step_s,
-    int gear_request) {
+    const io::config::VehicleModelSettings& settings, const RigConfig& config) {
+  const bool assist_input = config.routing.assist_from_input;
+  const double step_s = config.rig.period_s;
   model::vehicle::VehicleParams params = settings.params;
   params.steering.assist_from_input = assist_input;
+  params.fault_limits = config.rig.fault_limits;
   auto m = std::make_unique<model::vehicle::VehicleModel>(params, step_s);
   const double v = settings.initial_speed_mps;
-  const model::vehicle::VehicleModel::Equilibrium e = m->settle(v, gear_request);
+  const model::vehicle::VehicleModel::Equilibrium e = m->settle(v, first_gear_request(config));
   if (v != 0) {
     std::cerr << "rig: initial speed " << v << " m/s: steady state in gear " << e.gear
               << ", throttle " << e.throttle << " holds it";
@@ -35,11 +46,16 @@ std::unique_ptr<model::SteppedModel> make_vehicle_model(
 
 /// A model::combination::Combination; its parallel option runs on the rig's worker thread.
 std::unique_ptr<model::SteppedModel> make_combination_model(
-    const io::config::CombinationModelSettings& settings, bool assist_input, double step_s) {
+    const io::config::CombinationModelSettings& settings, const RigConfig& config) {
+  const bool assist_input = config.routing.assist_from_input;
+  const double step_s = config.rig.period_s;
   model::combination::CombinationParams p;
   p.name = settings.name;
   p.units = settings.units;
-  for (auto& unit : p.units) unit.steering.assist_from_input = assist_input;
+  for (auto& unit : p.units) {
+    unit.steering.assist_from_input = assist_input;
+    unit.fault_limits = config.rig.fault_limits;
+  }
   p.joints = settings.joints;
   p.parallel = settings.parallel;
   p.begin_step_runner = make_thread_begin_step_runner;
@@ -49,25 +65,14 @@ std::unique_ptr<model::SteppedModel> make_combination_model(
   return m;
 }
 
-/// The gear the run's driver asks for at t = 0 (99, automatic, without one).
-int first_gear_request(const RigConfig& config) {
-  model::Signals first{};
-  if (auto d = make_driver(config)) d->update(0.0, first);
-  const auto i = model::index(model::Signal::kGearRequest);
-  if (!first.valid[i] || !std::isfinite(first.value[i])) return 99;
-  return static_cast<int>(std::lround(first.value[i]));
-}
-
 }  // namespace
 
 std::unique_ptr<model::SteppedModel> make_model(const RigConfig& config) {
   if (config.model.kind == "vehicle") {
-    return make_vehicle_model(*config.model.vehicle, config.routing.assist_from_input,
-                              config.rig.period_s, first_gear_request(config));
+    return make_vehicle_model(*config.model.vehicle, config);
   }
   if (config.model.kind == "combination") {
-    return make_combination_model(*config.model.combination, config.routing.assist_from_input,
-                                  config.rig.period_s);
+    return make_combination_model(*config.model.combination, config);
   }
   // kind is validated at load time; the rest is "quarter-car".
   return std::make_unique<model::paper::QuarterCarModel>(config.model.quarter_car,

@@ -34,6 +34,11 @@ ExecutiveParams executive_params(const RigConfig& config, const RunOptions& opti
   p.cpu = options.cpu ? *options.cpu : config.rig.cpu;
   p.stall_cycle = options.stall_cycle;
   p.stall_ms = options.stall_ms;
+  p.hold_on_vehicle_fault = config.rig.hold_on_vehicle_fault;
+  if (config.model.vehicle) p.unit_files.push_back(config.model.vehicle->file.string());
+  if (config.model.combination) {
+    for (const auto& f : config.model.combination->unit_files) p.unit_files.push_back(f.string());
+  }
   return p;
 }
 

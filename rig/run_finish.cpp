@@ -5,12 +5,20 @@
 #include <string>
 
 #include "rig/summary.h"
+#include "rig/vehicle_fault_text.h"
 
 namespace rig {
 namespace {
 
-/// The error of a failed run ("" when it ended as asked).
+/// The error of a failed run ("" when it ended as asked). A held vehicle fault fails the run
+/// too, at its end.
 std::string failure_message(const Executive& exec, const FinishInputs& in) {
+  if (exec.vehicle_fault().kind != model::FaultKind::kNone) {
+    char text[400];
+    format_vehicle_fault(exec.vehicle_fault(), exec.fault_unit_file().c_str(), text, sizeof text);
+    return std::string(text) +
+           (in.reason == StopReason::kVehicleFault ? "; stopped" : "; held until the end");
+  }
   switch (in.reason) {
     case StopReason::kAbortAfter:
       return "aborted after " + std::to_string(in.abort_after) + " consecutive deadline misses";

@@ -19,7 +19,8 @@ struct FinishInputs {
   std::int64_t wall_start_ns = 0;  ///< CLOCK_MONOTONIC at assembly's end
 };
 
-/// Returns the exit code: 0, or 1 (abort-after, non-finite model, unwritable summary file).
+/// Returns the exit code: 0, or 1 (abort-after, non-finite model, a vehicle fault stopped or
+/// held, unwritable summary file).
 int finish_run(const Executive& exec, EventLog& log, const FinishInputs& in,
                const RunOptions& options, io::systemd::SystemdNotifier& notifier, rt::Clock& wall);
 

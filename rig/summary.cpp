@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "rig/vehicle_fault_text.h"
+
 namespace rig {
 namespace {
 
@@ -148,6 +150,10 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
     first = false;
   }
   j += "},\n";
+  if (e.vehicle_fault().kind != model::FaultKind::kNone) {
+    j += "  \"vehicle_fault\": " + vehicle_fault_json(e.vehicle_fault(), e.fault_unit_file()) +
+         ",\n";
+  }
   j += "  \"stop_reason\": \"" + x.stop_reason + "\",\n";
   j += fmt("  \"exit_code\": %d\n}\n", x.exit_code);
   return j;

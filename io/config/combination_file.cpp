@@ -15,7 +15,8 @@ CombinationModelSettings read_combination_model(StrictTable& m) {
   c.initial_speed_mps = m.number_in("initial_speed_mps", 0.0, -100, 100);
   c.parallel = m.boolean("parallel", false);
   for (auto& u : m.tables("unit")) {
-    c.units.push_back(load_vehicle_file(u.existing_path("vehicle")));
+    c.unit_files.push_back(u.existing_path("vehicle"));
+    c.units.push_back(load_vehicle_file(c.unit_files.back()));
     c.units.back().road = road;
     u.finish();
   }

@@ -7,6 +7,7 @@
 /// baseline), `parallel`, the road keys (applied to every unit) and initial_speed_mps. Strict
 /// (ConfigError with `file:line`), load time only.
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@ namespace rig::io::config {
 struct CombinationModelSettings {
   std::string name;
   std::vector<model::vehicle::VehicleParams> units;
+  std::vector<std::filesystem::path> unit_files;  ///< each unit's vehicle file, in order
   std::vector<model::combination::JointParams> joints;
   bool parallel = false;
   double initial_speed_mps = 0;

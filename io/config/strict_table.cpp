@@ -139,6 +139,30 @@ std::vector<double> StrictTable::numbers(std::string_view key) {
   return out;
 }
 
+std::vector<std::vector<double>> StrictTable::number_rows(std::string_view key,
+                                                          std::size_t columns) {
+  const toml::node& node = require(key);
+  const toml::array* arr = node.as_array();
+  const std::string expected = "expected an array of [" + std::to_string(columns) + " numbers]";
+  if (arr == nullptr) throw error(key, expected);
+  std::vector<std::vector<double>> out;
+  for (const toml::node& row : *arr) {
+    const toml::array* r = row.as_array();
+    if (r == nullptr || r->size() != columns) throw error(key, expected);
+    std::vector<double>& values = out.emplace_back();
+    for (const toml::node& element : *r) {
+      if (auto v = element.value_exact<double>()) {
+        values.push_back(*v);
+      } else if (auto i = element.value_exact<int64_t>()) {
+        values.push_back(static_cast<double>(*i));
+      } else {
+        throw error(key, expected);
+      }
+    }
+  }
+  return out;
+}
+
 std::vector<StrictTable> StrictTable::tables(std::string_view key) {
   const toml::node& node = require(key);
   const toml::array* arr = node.as_array();

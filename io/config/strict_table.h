@@ -43,6 +43,9 @@ class StrictTable {
   /// A path string, resolved relative to the directory of this file. Must exist.
   [[nodiscard]] std::filesystem::path existing_path(std::string_view key);
   [[nodiscard]] std::vector<double> numbers(std::string_view key);
+  /// An array of rows of `columns` numbers each, e.g. [[x, y, z], ...].
+  [[nodiscard]] std::vector<std::vector<double>> number_rows(std::string_view key,
+                                                             std::size_t columns);
   /// Array of tables, e.g. [[axle]].
   [[nodiscard]] std::vector<StrictTable> tables(std::string_view key);
 

@@ -1,5 +1,7 @@
 #include "io/config/vehicle_file.h"
 
+#include <array>
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -182,6 +184,22 @@ void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
   t.finish();
 }
 
+/// [chassis] body_points_m = [[x, y, z], ...]: body axes from the CG (vehicle_faults.h).
+std::vector<std::array<double, 3>> read_body_points(StrictTable& c) {
+  std::vector<std::array<double, 3>> points;
+  for (const auto& row : c.number_rows("body_points_m", 3)) {
+    for (const double v : row) {
+      if (!std::isfinite(v) || std::abs(v) > 100)
+        throw c.error("body_points_m", "coordinates must be finite, within +-100 m");
+    }
+    points.push_back({row[0], row[1], row[2]});
+  }
+  if (points.empty() || points.size() > static_cast<std::size_t>(model::vehicle::kMaxBodyPoints))
+    throw c.error("body_points_m",
+                  "needs 1 to " + std::to_string(model::vehicle::kMaxBodyPoints) + " points");
+  return points;
+}
+
 }  // namespace
 
 VehicleParams load_vehicle_file(const std::filesystem::path& file) {
@@ -199,6 +217,7 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file) {
     p.chassis.cg_height_m = c.number_in("cg_height_m", 0.05, 5);
     p.chassis.drag_area_m2 = c.number_in("drag_area_m2", 0, 50);
     p.chassis.air_density_kgpm3 = c.number_in("air_density_kgpm3", 1.2, 0, 2);
+    if (c.has("body_points_m")) p.chassis.body_points_m = read_body_points(c);
     c.finish();
   }
   std::map<std::string, TireParams> tires;
@@ -246,7 +265,8 @@ model::road::RoadParams read_road(StrictTable& m) {
 
 VehicleModelSettings read_vehicle_model(StrictTable& m) {
   VehicleModelSettings v;
-  v.params = load_vehicle_file(m.existing_path("vehicle"));
+  v.file = m.existing_path("vehicle");
+  v.params = load_vehicle_file(v.file);
   v.params.road = read_road(m);
   v.initial_speed_mps = m.number_in("initial_speed_mps", 0.0, -100, 100);
   v.params.slip_mask_speed_mps = m.number_in("slip_mask_speed_mps", 0.5, 0, 10);

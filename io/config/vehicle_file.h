@@ -23,6 +23,7 @@ model::road::RoadParams read_road(StrictTable& model_table);
 ///   road_grade, road_bank (tan of the slopes), road_friction (mu), initial_speed_mps,
 ///   slip_mask_speed_mps (VehicleParams).
 struct VehicleModelSettings {
+  std::filesystem::path file;  ///< the vehicle file (named in fault messages)
   model::vehicle::VehicleParams params;
   double initial_speed_mps = 0;
 };

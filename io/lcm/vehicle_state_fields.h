@@ -99,6 +99,9 @@ struct VehicleStateFields {
   /// Integers once per message (CSV: after the doubles).
   static constexpr ScalarField<S, R, std::int32_t> kVehicleInt[] = {
       {"gear", "1", member<&R::drivetrain, &Drivetrain::gear>, &S::gear},
+      {"model_valid", "1", member<&R::valid>, &S::model_valid},
+      {"model_fault_kind", "1", member<&R::fault_kind>, &S::model_fault_kind},
+      {"model_fault_unit", "1", member<&R::fault_unit>, &S::model_fault_unit},
   };
 
   /// Per joint of a combination (num_joints; joint i couples unit i and unit i + 1): the

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -103,16 +104,32 @@ void CombinationShell::set_forward_speed(double speed_mps) noexcept {
 
 StepStatus CombinationShell::step(Signals& signals) noexcept {
   for (auto& u : units_) u->set_inputs(signals);
-  bool ok = couple(h_);
-  for (const auto& u : units_) ok = ok && u->last_status() == StepStatus::kOk;
-  if (!ok) {
+  fault_ = first_fault(couple(h_));
+  if (fault_.kind != FaultKind::kNone) {
     for (auto& u : units_) u->revert_step();  // all units back to t (no-op where undone)
     revert_coupling();
-    return StepStatus::kNonFinite;
+    return step_status(fault_.kind);
   }
   time_s_ += h_;
   units_[0]->write_outputs(signals);
   return StepStatus::kOk;
+}
+
+ModelFault CombinationShell::first_fault(bool coupled) const noexcept {
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    if (units_[k]->last_status() == StepStatus::kOk) continue;
+    ModelFault f = units_[k]->last_fault();
+    if (f.kind == FaultKind::kNone) f.kind = FaultKind::kNonFinite;
+    f.unit = static_cast<std::int32_t>(k);
+    return f;
+  }
+  if (coupled) return {};
+  ModelFault f;
+  f.kind = FaultKind::kNonFinite;
+  f.unit = -1;
+  f.time_s = time_s_ + h_;
+  f.value = std::numeric_limits<double>::quiet_NaN();
+  return f;
 }
 
 double CombinationShell::joint_violation_m(int i) const noexcept {

@@ -47,8 +47,10 @@ class CombinationShell : public SteppedModel {
   [[nodiscard]] double step_size_s() const noexcept override { return h_; }
   [[nodiscard]] double time_s() const noexcept override { return time_s_; }
   /// All units read the same inputs (trailer brakes follow their axles' brake circuits); the
-  /// outputs are the leading unit's. A failed unit or coupling undoes the step in every unit.
+  /// outputs are the leading unit's. A failed unit or coupling undoes the step in every unit;
+  /// the fault is the first failed unit's (with its index), else the coupling's (unit -1).
   StepStatus step(Signals& signals) noexcept final;
+  [[nodiscard]] ModelFault last_fault() const noexcept final { return fault_; }
   void fill_report(ModelReport& report) const noexcept final;
 
   // ---- for tests and tools ----
@@ -91,8 +93,13 @@ class CombinationShell : public SteppedModel {
   CombinationParams p_;
   double h_;
   double time_s_ = 0;
+  ModelFault fault_{};
   std::vector<std::unique_ptr<vehicle::VehicleModel>> units_;
   std::unique_ptr<ChainConstraint> constraint_;
+
+ private:
+  /// The step's fault: the first unit that failed, else the coupling if it did, else none.
+  [[nodiscard]] ModelFault first_fault(bool coupled) const noexcept;
 };
 
 }  // namespace rig::model::combination

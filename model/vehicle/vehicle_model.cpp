@@ -11,7 +11,7 @@
 namespace rig::model::vehicle {
 
 VehicleModel::VehicleModel(const VehicleParams& params, double step_size_s)
-    : p_(params), h_(step_size_s) {
+    : p_(params), h_(step_size_s), fault_check_(p_) {
   if (p_.axles.empty() || 2 * p_.axles.size() > static_cast<std::size_t>(kMaxWheels)) {
     throw std::invalid_argument("vehicle: need 1.." + std::to_string(kMaxWheels / 2) + " axles");
   }
@@ -82,10 +82,11 @@ void VehicleModel::begin_step(double h) noexcept {
 }
 
 void VehicleModel::finish_step(double h, ConstVectorRef extra_rate) noexcept {
-  blocks_->sequence().finish_step(h, extra_rate);  // eq. (45)
-  if (!is_finite(state_)) {
-    state_ = saved_;
-    last_status_ = StepStatus::kNonFinite;
+  blocks_->sequence().finish_step(h, extra_rate);          // eq. (45)
+  fault_ = fault_check_.check(state_, saved_.time_s + h);  // before any output
+  if (fault_.kind != FaultKind::kNone) {
+    state_ = saved_;  // the last fault-free state
+    last_status_ = step_status(fault_.kind);
     return;
   }
   last_status_ = StepStatus::kOk;

@@ -12,6 +12,7 @@
 #include "model/solver/couplable_system.h"
 #include "model/stepped_model.h"
 #include "model/vehicle/vehicle_blocks.h"
+#include "model/vehicle/vehicle_faults.h"
 #include "model/vehicle/vehicle_inputs.h"
 #include "model/vehicle/vehicle_state.h"
 #include "model/vehicle/vehicle_workspace.h"
@@ -33,6 +34,8 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   [[nodiscard]] double step_size_s() const noexcept override { return h_; }
   [[nodiscard]] double time_s() const noexcept override { return state_.time_s; }
   StepStatus step(Signals& signals) noexcept override;
+  /// The fault of the last step (vehicle_faults.h), unit 0; kind kNone after a good step.
+  [[nodiscard]] ModelFault last_fault() const noexcept override { return fault_; }
   void fill_report(ModelReport& report) const noexcept override;
 
   // ---- CouplableSystem: one unit of a combination (eqs. 45-46) ----
@@ -48,7 +51,8 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   /// For the 6 chassis rows: S^-1 b with the Schur complement of the hub blocks.
   void solve_mass_leading(ConstMatrixRef b, MatrixRef x) const noexcept override;
   /// z(k+1) = z(k) + h (z^u + extra_rate), y(k+1) = ... (eq. 45), then the step's outputs. On a
-  /// non-finite state the step is undone (last_status() == kNonFinite).
+  /// fault (FaultCheck: non-finite, or beyond a limit) the step is undone before any output is
+  /// written (last_status() kNonFinite or kVehicleFault, last_fault() says what).
   void finish_step(double h, ConstVectorRef extra_rate) noexcept override;
   [[nodiscard]] StepStatus last_status() const noexcept { return last_status_; }
   /// Undoes the last completed step, e.g. when another unit of the same combination failed in
@@ -91,6 +95,8 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
  private:
   VehicleParams p_;
   double h_;
+  FaultCheck fault_check_;
+  ModelFault fault_{};
   VehicleState state_;
   VehicleState saved_;  ///< the state at the start of the step (rollback, acceleration)
   VehicleInputs inputs_{};

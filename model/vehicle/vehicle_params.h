@@ -123,6 +123,9 @@ struct DrivetrainParams {
 };
 
 /// Sprung mass (chassis) and aerodynamics.
+/// At most this many [chassis] body_points_m (vehicle_faults.h checks them every step).
+inline constexpr int kMaxBodyPoints = 32;
+
 struct ChassisParams {
   double mass_kg = 1300;                                ///< sprung mass
   std::array<double, 3> inertia_kgm2{450, 1900, 2100};  ///< Ixx, Iyy, Izz about the CG
@@ -138,6 +141,20 @@ struct ChassisParams {
   double support_x_m = 0;
   double payload_n = 0;
   double payload_x_m = 0;
+  /// Points of the body (body axes, from the CG) that must stay above the road, checked after
+  /// every step (vehicle_faults.h). Empty: the corners of a box from the axles, the track and
+  /// the CG height (default_body_points). At most kMaxBodyPoints.
+  std::vector<std::array<double, 3>> body_points_m;
+};
+
+/// Limits beyond which a state is a vehicle fault (vehicle_faults.h); the rig sets them from
+/// [rig] fault_roll_limit_rad, fault_pitch_limit_rad, fault_speed_limit_mps,
+/// fault_rate_limit_radps.
+struct FaultLimits {
+  double roll_rad = 1.0;   ///< |roll|
+  double pitch_rad = 0.6;  ///< |pitch|
+  double speed_mps = 100;  ///< CG speed magnitude; a wheel's spin: this / its unloaded radius
+  double rate_radps = 10;  ///< angular rate magnitude (body axes)
 };
 
 struct VehicleParams {
@@ -152,6 +169,7 @@ struct VehicleParams {
   /// 14-15), so at stand-still it reads the creep speed over v_N - tens to thousands - and
   /// means the direction of a tiny motion, not a slip ratio [m/s].
   double slip_mask_speed_mps = 0.5;
+  FaultLimits fault_limits{};
 };
 
 }  // namespace rig::model::vehicle

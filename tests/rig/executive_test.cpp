@@ -134,6 +134,73 @@ TEST(Executive, AbortAfterNConsecutiveMisses) {
   EXPECT_EQ(hx.exec.deadline_misses(), 3u);
 }
 
+/// A sink that keeps what the fault tests look at: validity and the first unit's x per snapshot.
+class ValiditySink final : public io::SnapshotSink {
+ public:
+  void start(const io::RunInfo&) override {}
+  void consume(const io::Snapshot& s, std::uint64_t) override {
+    valid.push_back(s.report.valid);
+    kind.push_back(s.report.fault_kind);
+    x.push_back(s.report.units[0].position_m[0]);
+    speed_valid.push_back(s.signals.valid[model::index(Signal::kVehicleSpeed)]);
+  }
+  void stop() override {}
+  std::vector<int> valid, kind;
+  std::vector<double> x;
+  std::vector<bool> speed_valid;
+};
+
+TEST(Executive, VehicleFaultStopsWithItsEvent) {
+  ExecutiveParams p;
+  p.duration_s = 1.0;
+  p.unit_files = {"tractor.toml", "trailer.toml"};
+  const auto log_path = temp_path("fault.jsonl");
+  {
+    Harness hx(p, log_path.string());
+    hx.model.fault_at_step = 42;
+    EXPECT_EQ(hx.exec.run_loop(), StopReason::kVehicleFault);
+    EXPECT_EQ(hx.exec.cycles(), 43u);
+    EXPECT_EQ(hx.exec.vehicle_fault().kind, model::FaultKind::kRoll);
+    EXPECT_EQ(hx.exec.vehicle_fault().unit, 1);
+    EXPECT_EQ(hx.exec.fault_unit_file(), "trailer.toml");
+    EXPECT_FALSE(hx.exec.signals().valid[model::index(Signal::kVehicleSpeed)]);
+    hx.log.stop();
+  }
+  const std::string log = read_file(log_path);
+  EXPECT_NE(log.find("\"event\":\"vehicle_fault\""), std::string::npos) << log;
+  EXPECT_NE(log.find("vehicle fault roll: roll 1.25 rad beyond the limit 1 rad at t = 0.043000 s, "
+                     "unit 1 (trailer.toml); stopping"),
+            std::string::npos)
+      << log;
+  std::filesystem::remove(log_path);
+}
+
+TEST(Executive, HeldVehicleFaultFreezesTheModelAndTheLoopRunsOn) {
+  ExecutiveParams p;
+  p.duration_s = 0.1;
+  p.hold_on_vehicle_fault = true;
+  test::OscillatorModel model(p.period_s);
+  FakeClock clock;
+  EventLog log("");
+  ValiditySink sink;
+  Executive exec(p, clock, model, nullptr, {}, {&sink}, log, Harness::routing());
+  model.fault_at_step = 30;
+  EXPECT_EQ(exec.run_loop(), StopReason::kDuration);
+  exec.drain_snapshots();
+  EXPECT_EQ(exec.cycles(), 100u);
+  EXPECT_EQ(model.steps(), 30u);  // frozen at its last fault-free state: never stepped again
+  EXPECT_EQ(exec.vehicle_fault().kind, model::FaultKind::kRoll);
+  ASSERT_EQ(sink.valid.size(), 100u);
+  for (std::size_t k = 0; k < 100; ++k) {
+    EXPECT_EQ(sink.valid[k], k < 30 ? 1 : 0) << k;
+    EXPECT_EQ(sink.kind[k], k < 30 ? 0 : static_cast<int>(model::FaultKind::kRoll)) << k;
+    EXPECT_EQ(sink.speed_valid[k], k < 30) << k;
+    if (k >= 30) {
+      EXPECT_EQ(sink.x[k], sink.x[29]) << k;  // frozen
+    }
+  }
+}
+
 TEST(Executive, StopsCleanlyOnNonFiniteModel) {
   ExecutiveParams p;
   p.duration_s = 1.0;
@@ -218,6 +285,11 @@ TEST(Config, BadInputGivesFileLine) {
       {"[driver]\nkind = \"path\"\npath = \"slalom\"\n", "unknown value 'slalom'", 3},
       {"[driver]\nkind = \"path\"\ntarget_speed = 10\n", "unknown key 'target_speed'", 3},
       {"[driver]\nkind = \"path\"\n\nstop_time_s = -1\n", "stop_time_s", 4},
+      {"[rig]\nfault_roll_limit_rad = -1.0\n", "fault_roll_limit_rad: must be finite and > 0", 2},
+      {"[rig]\n\nfault_pitch_limit_rad = 0\n", "fault_pitch_limit_rad: must be", 3},
+      {"[rig]\nfault_speed_limit_mps = -100\n", "fault_speed_limit_mps: must be", 2},
+      {"[rig]\nfault_rate_limit_radps = nan\n", "fault_rate_limit_radps: must be", 2},
+      {"[rig]\non_vehicle_fault = \"ignore\"\n", "unknown value 'ignore'", 2},
   };
   for (const auto& c : cases) {
     const auto file = temp_path("bad.toml");

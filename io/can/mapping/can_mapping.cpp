@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <string_view>
 
 #include "io/can/dbc/dbc_parser.h"
@@ -87,6 +88,20 @@ ChecksumSpec parse_checksum(config::StrictTable t, const dbc::MessageDef& m) {
   return c;
 }
 
+/// TX `invalid`: a raw bit pattern of the signal (0 .. 2^bits - 1; TOML integers are signed 64
+/// bit, so a 64-bit signal takes up to 2^63 - 1).
+std::uint64_t invalid_raw(config::StrictTable& t, const dbc::SignalDef& s) {
+  if (s.mux_role == dbc::MuxRole::kMultiplexed)
+    throw t.error("invalid", s.name + " is multiplexed: no invalid value");
+  const long long raw = t.integer("invalid");
+  const bool fits = s.length_bits >= 63 || raw < (1LL << s.length_bits);
+  if (raw < 0 || !fits) {
+    throw t.error("invalid", "raw value " + std::to_string(raw) + " does not fit the " +
+                                 std::to_string(s.length_bits) + " bits of " + s.name);
+  }
+  return static_cast<std::uint64_t>(raw);
+}
+
 MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bool rx) {
   MessageBinding b;
   b.dbc_message = message_index(t, db);
@@ -126,6 +141,7 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
       if (sb.scale == 0.0 || !std::isfinite(sb.scale)) throw st.error("scale", "must be non-zero");
       sb.offset = st.number("offset", 0.0);
       if (rx) sb.fallback = st.number("fallback", 0.0);
+      if (!rx && st.has("invalid")) sb.invalid_raw = invalid_raw(st, s);
     }
     if (b.counter && b.counter->dbc_signal == sb.dbc_signal) {
       throw st.error("dbc", "signal " + s.name + " is the alive counter, it cannot be mapped");

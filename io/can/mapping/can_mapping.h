@@ -26,6 +26,13 @@
 ///     dbc = "SteeringWheelAngle"; model = "steering_wheel_angle_rad"; convert = "deg_to_rad"
 ///     [[tx.signal]]
 ///     dbc = "RIG_Mode"; constant = 1.0  # a fixed physical value instead of a model signal
+///     [[tx.signal]]
+///     dbc = "VehicleSpeed"; model = "vehicle_speed_mps"; invalid = 0xFFFF   # optional
+///
+/// TX `invalid` (optional, an integer raw value that fits the signal's bits, e.g. the DBC's SNA
+/// value) is sent, unclamped, while the model signal is flagged invalid (a timed-out input, or
+/// every model output after a vehicle fault held by [rig] on_vehicle_fault = "hold"); without
+/// it the signal's value is sent as it is, i.e. the model's last valid output.
 ///
 /// Named conversions (model = dbc * scale): "none", "deg_to_rad", "kph_to_mps", "bar_to_pa",
 /// "rpm_to_radps", "percent_to_ratio". TX uses the inverse: dbc = (model - offset) / scale.
@@ -54,8 +61,9 @@ struct SignalBinding {
   std::optional<model::Signal> model;  ///< empty for a TX constant
   double scale = 1.0;                  ///< model = dbc * scale + offset
   double offset = 0.0;
-  double fallback = 0.0;  ///< RX: model value on timeout
-  double constant = 0.0;  ///< TX without model signal: physical DBC value sent
+  double fallback = 0.0;                       ///< RX: model value on timeout
+  double constant = 0.0;                       ///< TX without model signal: physical DBC value sent
+  std::optional<std::uint64_t> invalid_raw{};  ///< TX: raw value sent while `model` is invalid
 };
 
 struct CounterSpec {

@@ -76,6 +76,10 @@ void TxScheduler::encode(std::size_t i, const model::Signals& signals, TxFrame& 
   frame.fd = m.length_bytes > 8;
   frame.len = static_cast<std::uint8_t>(m.length_bytes);
   m.codec.encode(m.physical, frame.data.data());
+  for (const SignalBinding& b : m.bound) {  // after a vehicle fault, say: its SNA value
+    if (b.model && b.invalid_raw && !signals.valid[model::index(*b.model)])
+      m.codec.signal(b.dbc_signal).insert_raw(*b.invalid_raw, frame.data.data());
+  }
   if (m.counter) {
     m.codec.signal(m.counter->dbc_signal).insert_raw(m.counter_value, frame.data.data());
     m.counter_value = (m.counter_value + 1) % m.counter->modulus;

@@ -37,13 +37,18 @@ TEST(CanMapping, ExampleMappingLoads) {
   EXPECT_EQ(swa.period_ns, 10'000'000);
   EXPECT_DOUBLE_EQ(swa.signals[0].scale, std::numbers::pi / 180.0);
   EXPECT_DOUBLE_EQ(c.mapping.tx[1].signals[0].scale, 1.0 / 3.6);
+  EXPECT_FALSE(c.mapping.tx[1].signals[0].invalid_raw.has_value());
+  EXPECT_EQ(c.mapping.tx[2].signals[0].invalid_raw, 0xFFFFu);  // wheel speeds: SNA
 }
 
 class CanMappingErrors : public ::testing::Test {
  protected:
   /// Writes `body` after a `dbc = ...` line and returns the config::ConfigError text of loading it.
   static std::string error_of(const std::string& body) {
-    const std::string file = ::testing::TempDir() + "/rig_can_mapping_test.toml";
+    // one file per test: ctest runs the tests of this file in parallel processes
+    const std::string file = ::testing::TempDir() + "/rig_can_mapping_test_" +
+                             ::testing::UnitTest::GetInstance()->current_test_info()->name() +
+                             ".toml";
     {
       std::ofstream out(file);
       out << "dbc = \"" << kConfigDir << "/steering-bench.dbc\"\n" << body;
@@ -89,6 +94,22 @@ TEST_F(CanMappingErrors, UnknownNamesAndBadValuesNameTheLine) {
   EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx]]\nmessage = \"EPS_Status\"\n"),
               HasSubstr("mapped twice"));
   EXPECT_EQ(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"), "");
+}
+
+TEST_F(CanMappingErrors, TxInvalidRawMustFitTheSignal) {
+  const std::string head =
+      "[[tx]]\nmessage = \"RIG_VehicleSpeed\"\n[[tx.signal]]\ndbc = \"VehicleSpeed\"\n"
+      "model = \"vehicle_speed_mps\"\n";
+  EXPECT_EQ(error_of(head + "invalid = 0xFFFF\n"), "");
+  EXPECT_THAT(error_of(head + "invalid = 65536\n"),
+              HasSubstr(":7: [can mapping].tx[0].signal[0] invalid: raw value 65536 does not fit "
+                        "the 16 bits of VehicleSpeed"));
+  EXPECT_THAT(error_of(head + "invalid = -1\n"), HasSubstr(":7:"));
+  EXPECT_THAT(error_of(head + "invalid = 1.5\n"), HasSubstr("expected an integer"));
+  // RX has no `invalid` (its timeout has `fallback`)
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\n"
+                       "dbc = \"EPS_MotorTorque\"\nmodel = \"assist_torque_nm\"\ninvalid = 1\n"),
+              HasSubstr("invalid"));
 }
 
 }  // namespace

@@ -276,6 +276,42 @@ TEST_F(TxTest, ValuesConvertedAndClamped) {
   EXPECT_DOUBLE_EQ(decode(find("RIG_Chassis"), "Gear"), 0.0);
 }
 
+/// A vehicle fault held ([rig] on_vehicle_fault = "hold") flags every model output invalid: the
+/// wheel speeds (mapped with `invalid = 0xFFFF`) go out as that SNA raw value, the vehicle speed
+/// (no `invalid`) as the value it holds, the model's last valid output.
+TEST_F(TxTest, InvalidOutputSendsItsInvalidRawValue) {
+  const auto find = [&](const char* name) {
+    for (std::size_t m = 0; m < tx_.message_count(); ++m) {
+      if (config_.database.messages[config_.mapping.tx[m].dbc_message].name == name) return m;
+    }
+    return std::size_t{0};
+  };
+  const std::size_t wheels = find("RIG_WheelSpeeds");
+  const std::size_t speed = find("RIG_VehicleSpeed");
+  const auto& wdef = config_.database.messages[config_.mapping.tx[wheels].dbc_message];
+  const auto& sdef = config_.database.messages[config_.mapping.tx[speed].dbc_message];
+  const dbc::SignalCodec fl(*wdef.find_signal("WheelSpeed_FL"));
+  const dbc::SignalCodec rr(*wdef.find_signal("WheelSpeed_RR"));
+  const dbc::SignalCodec vs(*sdef.find_signal("VehicleSpeed"));
+  signals_.set(Signal::kWheelSpeedFL, 100.0);  // rad/s = 954.9 rpm
+  signals_.set(Signal::kWheelSpeedRR, 100.0);
+  signals_.set(Signal::kVehicleSpeed, 30.0);  // m/s = 108 km/h
+  can::mapping::TxFrame f;
+  tx_.encode(wheels, signals_, f, counters_);
+  EXPECT_NEAR(fl.decode(f.data.data()), 100.0 * 30.0 / std::numbers::pi, 0.05);
+  signals_.valid[model::index(Signal::kWheelSpeedFL)] = false;
+  signals_.valid[model::index(Signal::kVehicleSpeed)] = false;
+  tx_.encode(wheels, signals_, f, counters_);
+  EXPECT_EQ(fl.extract_raw(f.data.data()), 0xFFFFu);                             // SNA
+  EXPECT_NEAR(rr.decode(f.data.data()), 100.0 * 30.0 / std::numbers::pi, 0.05);  // still valid
+  tx_.encode(speed, signals_, f, counters_);
+  EXPECT_NEAR(vs.decode(f.data.data()), 108.0, 0.01);          // no `invalid`: the held value
+  EXPECT_EQ(counters_.out_of_range, 0u);                       // the SNA value is not clamped
+  signals_.valid[model::index(Signal::kWheelSpeedFL)] = true;  // valid again
+  tx_.encode(wheels, signals_, f, counters_);
+  EXPECT_NEAR(fl.decode(f.data.data()), 100.0 * 30.0 / std::numbers::pi, 0.05);
+}
+
 }  // namespace
 }  // namespace rig::io::can
 
