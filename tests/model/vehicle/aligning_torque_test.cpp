@@ -38,15 +38,15 @@ std::filesystem::path sedan_with(const std::string& from, const std::string& to)
 TEST(AligningTorque, VehicleFileReadsCasterAndTrail) {
   const VehicleParams p =
       io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
-  EXPECT_DOUBLE_EQ(p.axles[0].caster_trail_m, 0.025);
+  EXPECT_DOUBLE_EQ(p.axles[0].caster_trail_m, 0.020);
   EXPECT_DOUBLE_EQ(p.axles[1].caster_trail_m, 0.0);
   EXPECT_DOUBLE_EQ(p.axles[0].tire.tmeasy.trail.zero_slip_nominal, 0.22);
   EXPECT_DOUBLE_EQ(p.axles[0].tire.tmeasy.trail.end_slip_double, 1.0);
   // an old file: [steering] trail_m is the caster trail of the steered axle that gives none
-  const auto old_file = sedan_with("caster_trail_m = 0.025\n", "");
+  const auto old_file = sedan_with("caster_trail_m = 0.020\n", "");
   {
     std::string text = sedan_text();
-    text.erase(text.find("caster_trail_m = 0.025\n"), 23);
+    text.erase(text.find("caster_trail_m = 0.020\n"), 23);
     text.insert(text.find("tie_rod_stiffness_npm"), "trail_m = 0.04\n");
     std::ofstream(old_file) << text;
   }
