@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 #include "model/report.h"
@@ -30,6 +31,24 @@ TmeasyCurve read_curve(StrictTable t) {
   return c;
 }
 
+/// The optional pneumatic trail tables (model::tire::TmeasyTrail; absent: its defaults):
+/// trail_nominal / trail_double = { trail_over_length, zero_slip, end_slip } at F_zN / 2 F_zN.
+void read_trail(StrictTable& t, model::tire::TmeasyTrail& trail) {
+  const auto read = [&](const char* key, double& n0, double& sy0, double& syE) {
+    auto c = t.optional_table(key);
+    if (!c) return;
+    n0 = c->number_in("trail_over_length", 0, 1);
+    sy0 = c->number_in("zero_slip", 1e-3, 2);
+    syE = c->number_in("end_slip", 1e-3, 3);
+    if (!(syE > sy0)) throw c->error("end_slip", "end_slip must exceed zero_slip");
+    c->finish();
+  };
+  read("trail_nominal", trail.trail_over_length_nominal, trail.zero_slip_nominal,
+       trail.end_slip_nominal);
+  read("trail_double", trail.trail_over_length_double, trail.zero_slip_double,
+       trail.end_slip_double);
+}
+
 TireParams read_tire(StrictTable t) {
   TireParams tire;
   model::tire::TmeasyParams& p = tire.tmeasy;
@@ -50,6 +69,7 @@ TireParams read_tire(StrictTable t) {
   p.velocity_floor_mps = t.number_in("velocity_floor_mps", 0.01, 1e-4, 1);
   p.low_speed_damping_ratio = t.number_in("low_speed_damping_ratio", 1.0, 0, 10);
   p.low_speed_damping_speed_mps = t.number_in("low_speed_damping_speed_mps", 1.0, 0.01, 10);
+  read_trail(t, p.trail);
   t.finish();
   return tire;
 }
@@ -111,6 +131,7 @@ AxleParams read_axle(StrictTable t, const std::map<std::string, TireParams>& tir
   a.driven = t.boolean("driven", false);
   a.brake_circuit = t.choice("brake_circuit", "front", {"front", "rear"}) == "front" ? 0 : 1;
   a.brake_gain_nm_per_pa = t.number_in("brake_gain_nm_per_pa", 0, 1);
+  a.caster_trail_m = t.number_in("caster_trail_m", 0, -0.1, 0.3);
   const std::string tire = t.string("tire");
   const auto it = tires.find(tire);
   if (it == tires.end()) throw t.error("tire", "no [tires." + tire + "] table");
@@ -120,7 +141,8 @@ AxleParams read_axle(StrictTable t, const std::map<std::string, TireParams>& tir
   return a;
 }
 
-void read_steering(StrictTable t, model::vehicle::SteeringParams& s) {
+/// Reads [steering]; returns the old `trail_m` if the file gives it (see read_vehicle_file).
+std::optional<double> read_steering(StrictTable t, model::vehicle::SteeringParams& s) {
   s.torque_input = t.choice("input", "angle", {"angle", "torque"}) == "torque";
   s.wheel_inertia_kgm2 = t.number_in("wheel_inertia_kgm2", 1e-3, 10);
   s.column_damping_nmspr = t.number_in("column_damping_nmspr", 0, 100);
@@ -134,10 +156,12 @@ void read_steering(StrictTable t, model::vehicle::SteeringParams& s) {
   s.rack_friction_speed_mps = t.number_in("rack_friction_speed_mps", 0.002, 1e-5, 1);
   s.steering_arm_m = t.number_in("steering_arm_m", 0.01, 2);
   s.tie_rod_stiffness_npm = t.number_in("tie_rod_stiffness_npm", 1e3, 1e10);
-  s.trail_m = t.number_in("trail_m", 0, 0.5);
+  std::optional<double> trail_m;
+  if (t.has("trail_m")) trail_m = t.number_in("trail_m", 0, 0.5);
   s.assist_gain = t.number_in("assist_gain", 0, 100);
   s.assist_max_nm = t.number_in("assist_max_nm", 1e-3, 1e4);
   t.finish();
+  return trail_m;
 }
 
 void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
@@ -229,7 +253,11 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file) {
     }
     tt.finish();
   }
-  for (auto& a : t.tables("axle")) p.axles.push_back(read_axle(std::move(a), tires));
+  std::vector<bool> caster_given;
+  for (auto& a : t.tables("axle")) {
+    caster_given.push_back(a.has("caster_trail_m"));
+    p.axles.push_back(read_axle(std::move(a), tires));
+  }
   if (p.axles.empty() || p.axles.size() > static_cast<std::size_t>(model::kMaxWheelsPerUnit / 2)) {
     throw t.error("axle", "needs 1 to 6 [[axle]] tables");
   }
@@ -240,7 +268,13 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file) {
     any_driven = any_driven || a.driven;
   }
   if (auto s = t.optional_table("steering")) {
-    read_steering(std::move(*s), p.steering);
+    // The old [steering] trail_m (one constant trail, pneumatic + caster) is still read: as the
+    // caster trail of each steered axle without its own caster_trail_m; the pneumatic trail is
+    // now the tire's, n(s_y) (model/tire aligning_torque_nm).
+    if (const auto trail_m = read_steering(std::move(*s), p.steering)) {
+      for (std::size_t i = 0; i < p.axles.size(); ++i)
+        if (p.axles[i].steered && !caster_given[i]) p.axles[i].caster_trail_m = *trail_m;
+    }
   } else if (any_steered) {
     throw t.error("steering", "a vehicle with a steered axle needs a [steering] table");
   }

@@ -20,8 +20,11 @@ model::road::RoadParams read_road(StrictTable& model_table);
 
 /// The vehicle keys of a rig configuration's [model] table (kind = "vehicle"):
 ///   vehicle = "../vehicles/sedan.toml"   (relative to the configuration file)
-///   road_grade, road_bank (tan of the slopes), road_friction (mu), initial_speed_mps,
+///   road_grade, road_bank (tan of the slopes), road_friction, initial_speed_mps,
 ///   slip_mask_speed_mps (VehicleParams).
+/// road_friction scales every tire's F_M and F_S by road_friction / reference_friction (1): so 1
+/// means "the tire data as given", not a peak friction of 1 (the sedan's p205 peaks at F_M / F_z
+/// = 1.07-1.27 over 1.75-7 kN: lateral 1.20, longitudinal 1.26 at its nominal 3.5 kN).
 struct VehicleModelSettings {
   std::filesystem::path file;  ///< the vehicle file (named in fault messages)
   model::vehicle::VehicleParams params;

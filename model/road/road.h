@@ -10,9 +10,11 @@
 namespace rig::model::road {
 
 struct RoadParams {
-  double grade = 0;       ///< tan of the uphill slope in +x [-] (0.2 = 20 %)
-  double bank = 0;        ///< tan of the bank slope, uphill in +y [-]
-  double friction = 1.0;  ///< mu, scales F_M and F_S of all tires
+  double grade = 0;  ///< tan of the uphill slope in +x [-] (0.2 = 20 %)
+  double bank = 0;   ///< tan of the bank slope, uphill in +y [-]
+  /// Scales F_M and F_S of all tires by friction / their reference_friction: 1 = the tire data as
+  /// given (whose own peak F_M / F_z may well exceed 1), not a peak friction of 1.
+  double friction = 1.0;
   /// Split mu: mu under the right-hand wheels; < 0: the same as friction.
   double friction_right = -1.0;
   double gravity_mps2 = 9.81;

@@ -59,6 +59,9 @@ struct AxleParams {
   bool driven = false;
   int brake_circuit = 0;               ///< 0 = front circuit, 1 = rear circuit
   double brake_gain_nm_per_pa = 1e-4;  ///< brake torque capacity per wheel per pressure
+  /// Steered axle: the kingpin axis meets the ground this far ahead of the contact centre. The
+  /// aligning torque is -(n(s_y) + caster trail) F_y, n the tire's pneumatic trail (model/tire).
+  double caster_trail_m = 0;
   TireParams tire{};
   AxleKinematicsParams kinematics{};
 };
@@ -79,7 +82,6 @@ struct SteeringParams {
   double rack_friction_speed_mps = 0.002;
   double steering_arm_m = 0.13;          ///< wheel steer = rack travel / arm (small angles)
   double tie_rod_stiffness_npm = 1.5e6;  ///< per side, as seen at the rack
-  double trail_m = 0.04;                 ///< pneumatic + caster trail for the aligning torque
   double assist_gain = 4.0;              ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
   double assist_max_nm = 12.0;
   /// Which assist acts (a routing decision, set by the rig from [routing] assist_torque_nm):
@@ -106,7 +108,9 @@ struct DrivetrainParams {
   double reverse_ratio = 3.6;
   double final_drive_ratio = 3.5;
   double efficiency = 0.92;
-  double transmission_inertia_kgm2 = 0.5;   ///< at the differential input (propeller shaft side)
+  /// Gearbox output + propeller shaft + differential, integrated at the carrier speed w_c (wheel
+  /// speed, after the final drive): a propeller-shaft-side J counts as J i_final^2 here.
+  double transmission_inertia_kgm2 = 0.5;
   double half_shaft_stiffness_nmpr = 8000;  ///< per driven wheel
   double half_shaft_damping_nmspr = 40;
   double upshift_speed_low_radps = 220;   ///< engine speed for an upshift at zero throttle

@@ -25,9 +25,16 @@ void WheelSpinStage::tie_rods() noexcept {
   for (int i = 0; i < work_.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
     WheelWork& w = work_.wheels[k];
-    if (!p_.axles[k / 2].steered) continue;
-    // the aligning torque F_y n loads the rack by virtual work: F_rack = M dgamma/du
-    w.tie_rod_force_n = state_.lateral_force_n[k] * sp.trail_m * w.steer_d_du;
+    const AxleParams& axle = p_.axles[k / 2];
+    if (!axle.steered) continue;
+    // aligning torque M_z = -(n(s_y) + caster trail) F_y: TMeasy's pneumatic trail n falls with
+    // the lateral slip (Rill 2011, sec. 3.4.3), so the steering goes light near the limit; it
+    // loads the rack by virtual work, F_rack = -M_z dgamma/du (eq. 29)
+    const double lat_force_n = state_.lateral_force_n[k];
+    const double aligning_nm =
+        tire::aligning_torque_nm(axle.tire.tmeasy, w.tire.kinematics, w.load_n, lat_force_n) -
+        axle.caster_trail_m * lat_force_n;
+    w.tie_rod_force_n = -aligning_nm * w.steer_d_du;
     state_.rack_at_wheel_m[k] = rack - w.tie_rod_force_n / sp.tie_rod_stiffness_npm;
     // gamma of eq. (29) at the new rack travel, linear in u about the step's pose
     set_wheel_orientation(

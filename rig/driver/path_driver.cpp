@@ -36,7 +36,7 @@ std::vector<PathPoint> iso3888_1_centreline(double start_x_m, double lane_offset
 
 PathDriverParams read_path_driver(io::config::StrictTable& t, const PathDriverVehicle& vehicle) {
   PathDriverParams p;
-  const std::string path = t.choice("path", "iso3888-1", {"iso3888-1", "straight"});
+  const std::string path = t.choice("path", "iso3888-1", {"iso3888-1", "straight", "circle"});
   const double start_x_m = t.number_in("path_start_x_m", 30.0, -1e6, 1e6);
   const double lane_offset_m = t.number_in("lane_offset_m", 3.5, -20.0, 20.0);
   if (path == "iso3888-1") {
@@ -44,9 +44,20 @@ PathDriverParams read_path_driver(io::config::StrictTable& t, const PathDriverVe
   } else {
     p.path = {{start_x_m - 1e6, 0.0}, {start_x_m + 1e6, 0.0}};
   }
+  if (path == "circle") {
+    p.circle_radius_m = t.number_in("circle_radius_m", 1.0, 1e4);
+    p.circle_centre = {start_x_m, p.circle_radius_m};
+  }
   p.target_speed_mps = t.number_in("target_speed_mps", p.target_speed_mps, 0.0, 100.0);
+  p.speed_step_mps = t.number_in("speed_step_mps", 0.0, -10.0, 10.0);
+  p.speed_step_duration_s = t.number_in("speed_step_duration_s", 5.0, 0.1, 1e4);
+  p.target_speed_max_mps = t.number_in("target_speed_max_mps", 100.0, 0.0, 100.0);
+  p.gear_request = t.number_in("gear_request", 99.0, -1.0, 99.0);
+  if (p.gear_request != std::round(p.gear_request))
+    throw t.error("gear_request", "gear_request: need a whole gear number (99: automatic)");
   p.preview_time_s = t.number_in("preview_time_s", p.preview_time_s, 0.05, 10.0);
   p.preview_min_m = t.number_in("preview_min_m", p.preview_min_m, 0.5, 100.0);
+  p.offset_integral_radpms = t.number_in("offset_integral_radpms", 0.0, 0.0, 1.0);
   p.wheelbase_m = t.number_in("wheelbase_m", vehicle.wheelbase_m, 0.5, 20.0);
   p.steering_ratio = t.number_in("steering_ratio", vehicle.steering_ratio, 1.0, 100.0);
   p.max_steering_wheel_rad =
@@ -79,14 +90,37 @@ double PathDriver::path_y(double x) const noexcept {
   return a.y_m + (b.y_m - a.y_m) * (x - a.x_m) / (b.x_m - a.x_m);
 }
 
+double PathDriver::target_speed_mps(double t) const noexcept {
+  if (p_.speed_step_mps == 0) return p_.target_speed_mps;
+  const double steps = std::floor(t / p_.speed_step_duration_s);
+  return std::min(p_.target_speed_max_mps, p_.target_speed_mps + steps * p_.speed_step_mps);
+}
+
+PathPoint PathDriver::preview_point(double x, double y, double psi, double look) const noexcept {
+  if (p_.circle_radius_m <= 0) {
+    const double tx = x + look * std::cos(psi);
+    return {tx, path_y(tx)};
+  }
+  // the circle's point an arc `look` ahead of the vehicle's projection (counter-clockwise)
+  const PathPoint& c = p_.circle_centre;
+  const double angle = std::atan2(y - c.y_m, x - c.x_m) + look / p_.circle_radius_m;
+  return {c.x_m + p_.circle_radius_m * std::cos(angle),
+          c.y_m + p_.circle_radius_m * std::sin(angle)};
+}
+
+double PathDriver::offset_m(double x, double y) const noexcept {
+  if (p_.circle_radius_m <= 0) return y - path_y(x);
+  return p_.circle_radius_m - std::hypot(x - p_.circle_centre.x_m, y - p_.circle_centre.y_m);
+}
+
 void PathDriver::update(double t, model::Signals& s) noexcept {
   const double dt = std::clamp(t - last_time_s_, 0.0, 0.1);
   last_time_s_ = t;
   const double v = s[Signal::kVehicleSpeed];
   const double x = s[Signal::kPositionX], y = s[Signal::kPositionY], psi = s[Signal::kHeading];
-  lateral_offset_m_ = y - path_y(x);
+  lateral_offset_m_ = offset_m(x, y);
   // speed: PI on throttle, P on brake pressure
-  const double err = p_.target_speed_mps - v;
+  const double err = target_speed_mps(t) - v;
   double throttle = 0, brake_front = 0, brake_rear = 0;
   if (t >= p_.stop_time_s) {  // stop phase: no throttle, circuit pressures ramped and held
     const double ramp =
@@ -103,14 +137,19 @@ void PathDriver::update(double t, model::Signals& s) noexcept {
   if (feeds(Signal::kThrottlePedal)) s.set(Signal::kThrottlePedal, throttle);
   if (feeds(Signal::kBrakePressureFront)) s.set(Signal::kBrakePressureFront, brake_front);
   if (feeds(Signal::kBrakePressureRear)) s.set(Signal::kBrakePressureRear, brake_rear);
-  if (feeds(Signal::kGearRequest)) s.set(Signal::kGearRequest, 99);
+  if (feeds(Signal::kGearRequest)) s.set(Signal::kGearRequest, p_.gear_request);
   // steering: pure pursuit towards the path point one preview distance ahead
   const double look = std::max(p_.preview_min_m, std::abs(v) * p_.preview_time_s);
   const double cx = std::cos(psi), sx = std::sin(psi);
-  const double tx = x + look * cx;
-  const double ty = path_y(tx);
-  const double lateral = -(tx - x) * sx + (ty - y) * cx;  // target in vehicle axes
-  const double wheel = std::atan(2.0 * p_.wheelbase_m * lateral / (look * look));
+  const PathPoint target = preview_point(x, y, psi, look);
+  const double dx = target.x_m - x, dy = target.y_m - y;
+  const double lateral = -dx * sx + dy * cx;  // in vehicle axes
+  // pure pursuit's arc through the target: curvature 2 lateral / distance^2 (on the circle the
+  // chord, shorter than the preview arc; ahead on a path the preview distance in x)
+  const double distance2 = p_.circle_radius_m > 0 ? dx * dx + dy * dy : look * look;
+  offset_integral_ms_ = std::clamp(offset_integral_ms_ + lateral_offset_m_ * dt, -50.0, 50.0);
+  const double wheel = std::atan(2.0 * p_.wheelbase_m * lateral / distance2) -
+                       p_.offset_integral_radpms * offset_integral_ms_;
   const double sw =
       std::clamp(p_.steering_ratio * wheel, -p_.max_steering_wheel_rad, p_.max_steering_wheel_rad);
   if (feeds(Signal::kSteeringWheelAngleCmd)) s.set(Signal::kSteeringWheelAngleCmd, sw);

@@ -24,9 +24,22 @@ struct PathPoint {
 
 struct PathDriverParams {
   std::vector<PathPoint> path;  ///< centreline in the road frame, x increasing
+  /// > 0: the path is instead a circle of this radius, driven counter-clockwise (to the left),
+  /// centred at circle_centre (ISO 4138 constant radius) [m].
+  double circle_radius_m = 0;
+  PathPoint circle_centre{};
   double target_speed_mps = 60 / 3.6;
+  /// Speed steps (ISO 4138 steady states): the target rises by speed_step_mps every
+  /// speed_step_duration_s, up to target_speed_max_mps; 0: a constant target.
+  double speed_step_mps = 0;
+  double speed_step_duration_s = 5.0;
+  double target_speed_max_mps = 100.0;
+  double gear_request = 99;     ///< sent as the gear request (99: automatic; n: hold gear n)
   double preview_time_s = 0.9;  ///< look-ahead distance = max(min, v T)
   double preview_min_m = 6.0;
+  /// Integral action on the lateral offset (holds the circle's radius against the body slip
+  /// angle that pure pursuit on the heading leaves): road-wheel steer per m s of offset; 0: none.
+  double offset_integral_radpms = 0;
   double wheelbase_m = 2.8;
   double steering_ratio = 16.0;  ///< steering wheel angle / road wheel angle
   double max_steering_wheel_rad = 8.0;
@@ -47,11 +60,13 @@ struct PathDriverVehicle {
 };
 
 /// Reads `[driver] kind = "path"` (the caller has read `kind`):
-///   path = "iso3888-1" | "straight", path_start_x_m, lane_offset_m (ISO 3888-1 centreline),
-///   target_speed_mps, preview_time_s, preview_min_m, wheelbase_m and steering_ratio (default:
-///   `vehicle`), max_steering_wheel_rad, speed_gain_per_mps, speed_integral_per_m,
-///   brake_gain_pa_per_mps, stop_time_s, stop_brake_pressure_front_pa,
-///   stop_brake_pressure_rear_pa, stop_brake_ramp_s.
+///   path = "iso3888-1" | "straight" | "circle", path_start_x_m, lane_offset_m (ISO 3888-1
+///   centreline), circle_radius_m (circle: tangent to the x axis at path_start_x_m, to the left),
+///   target_speed_mps, speed_step_mps, speed_step_duration_s, target_speed_max_mps, gear_request,
+///   offset_integral_radpms,
+///   preview_time_s, preview_min_m, wheelbase_m and steering_ratio (default: `vehicle`),
+///   max_steering_wheel_rad, speed_gain_per_mps, speed_integral_per_m, brake_gain_pa_per_mps,
+///   stop_time_s, stop_brake_pressure_front_pa, stop_brake_pressure_rear_pa, stop_brake_ramp_s.
 /// Throws ConfigError(file:line) on unknown keys or impossible values; calls finish().
 PathDriverParams read_path_driver(io::config::StrictTable& driver_table,
                                   const PathDriverVehicle& vehicle);
@@ -73,10 +88,19 @@ class PathDriver final : public Driver {
   [[nodiscard]] double lateral_offset_m() const noexcept { return lateral_offset_m_; }
   /// Path y at road x (linear between points; clamped at the ends).
   [[nodiscard]] double path_y(double x_m) const noexcept;
+  /// The speed target at a time (the steps included) [m/s].
+  [[nodiscard]] double target_speed_mps(double sim_time_s) const noexcept;
 
  private:
+  /// Road-frame point of the path one preview distance `look_m` ahead of (x, y, heading psi).
+  [[nodiscard]] PathPoint preview_point(double x_m, double y_m, double psi_rad,
+                                        double look_m) const noexcept;
+  /// Lateral offset of (x, y) from the path: left of it + (on the circle: inside it) [m].
+  [[nodiscard]] double offset_m(double x_m, double y_m) const noexcept;
+
   PathDriverParams p_;
   double integral_ = 0;
+  double offset_integral_ms_ = 0;  ///< integral of the lateral offset [m s]
   double last_time_s_ = 0;
   double lateral_offset_m_ = 0;
 };

@@ -158,15 +158,21 @@ TEST(SuspensionKinematics, FrontToeGivesOpposedCorneringForces) {
       tire::characteristic_at(p.axles[0].tire.tmeasy, fl.load_n, 1.0).y.initial_slope_n;
   const double c_fr =
       tire::characteristic_at(p.axles[0].tire.tmeasy, fr.load_n, 1.0).y.initial_slope_n;
-  // the tie rods yield to the aligning torque F_y n: compliance steer
-  // d gamma = -F_y n (dgamma/du)^2 / c_tie, dgamma/du = 1/arm at small angles
+  // the tie rods yield to the aligning torque F_y (n + caster trail): compliance steer
+  // d gamma = -F_y (n + caster trail) (dgamma/du)^2 / c_tie, dgamma/du = 1/arm at small angles;
+  // n is the tire's pneumatic trail at the wheel's logged state (the same on both sides here)
   const SteeringParams& st = p.steering;
+  const tire::TireKinematics kin{fl.long_speed_mps, fl.lat_speed_mps, fl.spin_radps,
+                                 fl.rolling_radius_m};
+  const double trail_m =
+      -tire::aligning_torque_nm(p.axles[0].tire.tmeasy, kin, fl.tire_load_n, 1.0) +
+      p.axles[0].caster_trail_m;
   const double compliance =
-      st.trail_m / (st.steering_arm_m * st.steering_arm_m * st.tie_rod_stiffness_npm);
+      trail_m / (st.steering_arm_m * st.steering_arm_m * st.tie_rod_stiffness_npm);
   std::printf(
-      "toe %.4f rad: steer FL %.5f rad (toe - compliance %.5f), F_y FL %.1f N "
+      "toe %.4f rad, trail %.4f m: steer FL %.5f rad (toe - compliance %.5f), F_y FL %.1f N "
       "(dFy0 tan(steer) %.1f), FR %.1f N (%.1f), yaw rate %.1e rad/s\n",
-      toe, fl.steer_angle_rad, toe - compliance * fl.force_y_n, fl.force_y_n,
+      toe, trail_m, fl.steer_angle_rad, toe - compliance * fl.force_y_n, fl.force_y_n,
       c_fl * std::tan(fl.steer_angle_rad), fr.force_y_n, c_fr * std::tan(fr.steer_angle_rad),
       s[Signal::kYawRate]);
   EXPECT_NEAR(fl.steer_angle_rad, toe - compliance * fl.force_y_n, 0.02 * toe);
