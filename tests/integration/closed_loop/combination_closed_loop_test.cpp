@@ -157,10 +157,15 @@ std::vector<Sample> force_history(Model& m, double speed_mps, double seconds, lo
   driver::PathDriver d(
       lane_change_then_brake(m.unit(0).params(), speed_mps, brake_time_s, front_pa, rear_pa));
   Signals s = driver_inputs();
+  // the gear held: the automatic's shift instant moves by a few ms with h (the threshold
+  // crossing) and its shift transient then rings in another phase - the vehicle's step-size
+  // dependence, not the coupling's error this compares
+  const int gear = m.unit(0).state().gear;
   std::vector<Sample> out;
   const long n = std::lround(seconds / m.step_size_s());
   for (long k = 0; k < n; ++k) {
     d.update(m.time_s(), s);
+    s[Signal::kGearRequest] = gear;
     if (m.step(s) != StepStatus::kOk) return out;
     if ((k + 1) % every == 0) out.push_back({m.joint_force_n(0), m.unit(0).speeds()(0)});
   }
