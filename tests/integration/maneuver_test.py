@@ -20,20 +20,17 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from rig_checks import fail  # noqa: E402
+import rig_checks  # noqa: E402
+
 RIG, LOG2CSV, SRC, NAME = sys.argv[1:5]
 COLUMNS = ("sim_time_s", "unit0_", "unit1_", "wheel0_", "steering_", "gear", "num_", "joint0_")
 TMP = tempfile.mkdtemp(prefix=f"rig_maneuver_{NAME}_")
 
 
-def fail(msg):
-    print("FAIL:", msg)
-    sys.exit(1)
-
-
 def check(cond, msg):
-    if not cond:
-        fail(msg)
-    print("ok:", msg)
+    rig_checks.check(cond, msg, verbose=True)
 
 
 def config_path(name):

@@ -16,21 +16,15 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from rig_checks import check, fail  # noqa: E402
+
 RIG, SRC, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 CONFIG = os.path.join(SRC, "config", "rig.toml")
 TMP = tempfile.mkdtemp(prefix="rig_cli_")
 SUMMARY_KEYS = ["cycles", "deadline_misses", "sim_time_s", "wall_time_s", "lateness_ns", "compute_ns",
                 "rt", "policy", "histogram", "can"]
 
-
-def fail(msg):
-    print("FAIL:", msg)
-    sys.exit(1)
-
-
-def check(cond, msg):
-    if not cond:
-        fail(msg)
 
 
 def run(args, **kw):

@@ -25,6 +25,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from rig_checks import check, fail  # noqa: E402
+
 RIG, LOG2CSV, SRC, CASE = sys.argv[1:5]
 SRC = os.path.abspath(SRC)
 VEHICLES = os.path.join(SRC, "config", "vehicles")
@@ -32,15 +35,6 @@ TMP = tempfile.mkdtemp(prefix="rig_fault_")
 LIMITS = {"roll": 1.0, "pitch": 0.6, "speed": 100.0, "rate": 10.0}
 DIVE_PITCH_LIMIT = 0.045  # [rad] below the sedan's dive at 300 bar (0.055 rad)
 
-
-def fail(msg):
-    print("FAIL:", msg)
-    sys.exit(1)
-
-
-def check(cond, msg):
-    if not cond:
-        fail(msg)
 
 
 def config(name, rig_keys, vehicle="sedan.toml", speed=30.0, brake_bar=300.0):
