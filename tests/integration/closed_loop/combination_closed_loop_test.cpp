@@ -30,7 +30,6 @@ CombinationParams load(const char* file) { return test::load_combination(file); 
 
 Signals driver_inputs() { return test::all_driver_inputs(); }
 
-
 /// Steered by the leading unit: wheelbase and steering ratio for the path driver.
 driver::PathDriverParams path_driver_for(const vehicle::VehicleParams& lead, double start_x_m,
                                          double speed_mps) {
