@@ -70,12 +70,13 @@ T f_of_s_t(const CurveT<T>& k, const T& s) {
   return k.slide_force_n / s;
 }
 
-/// The sliding ratio F(s)/F_M of the characteristic: 1 up to s_M, falling to F_S/F_M at s_S
-/// and beyond. Eq. (26)'s limit is F_M times it, so that a sliding tire transmits F(s) -> F_S.
-template <class T>
-T sliding_ratio_t(const CurveT<T>& k, const T& s) {
-  if (value_of(s) <= value_of(k.max_slip)) return T(1.0);
-  return f_of_s_t(k, s) * s / k.max_force_n;
+/// The sliding ratio F(s)/F_M of the characteristic, from f = f(s): 1 up to s_M, falling to
+/// F_S/F_M at s_S and beyond. Eq. (26)'s limit is F_M times it, so that a sliding tire transmits
+/// F(s) -> F_S.
+template <class T, class Slip>
+T sliding_ratio_t(const T& max_slip, const T& max_force_n, const Slip& s, const Slip& f) {
+  if (value_of(s) <= value_of(max_slip)) return T(1.0);
+  return f * s / max_force_n;
 }
 
 inline CurveT<double> to_t(const TmeasyCurve& c) {

@@ -60,7 +60,8 @@ SlipCurveDual slip_curve_dual(const TireCharacteristic& c, const D3& slip_x,
       constant(c.x), constant(c.y), internal::NormT<D3>{c.normalize_x, c.normalize_y}, cos_phi,
       sin_phi);
   if (k.max_force_n.v <= 0.0 || k.initial_slope_n.v <= 0.0) return {D3(0.0), D3(1.0)};
-  return {internal::f_of_s_t(k, s), internal::sliding_ratio_t(k, s)};
+  const D3 f = internal::f_of_s_t(k, s);
+  return {f, internal::sliding_ratio_t(k.max_slip, k.max_force_n, s, f)};
 }
 
 }  // namespace
@@ -79,10 +80,7 @@ TireForcePartials tire_force_partials(const TmeasyParams& p, const TireCharacter
                       -vy / (rolling * c.normalize_y + p.velocity_floor_mps));
   const D3& f = curve.f;
   // the low-speed damping's weight (deflection_damping), moving with v_x
-  D3 weight(0.0);
-  if (std::abs(k.long_speed_mps) < p.low_speed_damping_speed_mps)
-    weight = 0.5 * (1.0 + internal::cos(3.14159265358979323846 * internal::abs(vx) /
-                                        p.low_speed_damping_speed_mps));
+  const D3 weight = low_speed_weight(p, vx);
   const auto force = [&](const D3& slip_speed, double normalize, double deflection,
                          double stiffness, const D3& damping) {
     const D3 rs = rolling * normalize;
@@ -148,7 +146,7 @@ SlipCurveValue slip_curve_value(const TireCharacteristic& c, double slip_x,
                                           cos_phi, sin_phi);
   if (k.max_force_n <= 0.0 || k.initial_slope_n <= 0.0) return {};
   const double f = evaluate_characteristic(k, s).f_n;
-  return {f, s <= k.max_slip ? 1.0 : f * s / k.max_force_n};  // internal::sliding_ratio_t
+  return {f, internal::sliding_ratio_t(k.max_slip, k.max_force_n, s, f)};
 }
 
 TireSlip slip_of(const TireCharacteristic& c, const TireKinematics& k,

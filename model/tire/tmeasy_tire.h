@@ -20,9 +20,11 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include <Eigen/Core>
 
+#include "model/tire/dual.h"
 #include "model/tire/tmeasy_params.h"
 
 namespace rig::model::tire {
@@ -118,12 +120,15 @@ struct DirectionalDynamics {
           -stiffness_npm * rs / denom, damping_nspm * f_per_slip / denom};
 }
 
-/// The weight (1 + cos(pi |v_x| / v_low)) / 2 of the low-speed damping: 1 at rest, 0 from v_low.
-[[nodiscard]] inline double low_speed_weight(const TmeasyParams& p,
-                                             double long_speed_mps) noexcept {
-  const double a = std::abs(long_speed_mps);
-  if (a >= p.low_speed_damping_speed_mps) return 0.0;
-  return 0.5 * (1.0 + std::cos(3.14159265358979323846 * a / p.low_speed_damping_speed_mps));
+/// The weight (1 + cos(pi |v_x| / v_low)) / 2 of the low-speed damping: 1 at rest, 0 from v_low
+/// (in double, or in the dual numbers of tire_force_partials).
+template <class T>
+[[nodiscard]] inline T low_speed_weight(const TmeasyParams& p, const T& long_speed_mps) noexcept {
+  using std::abs;
+  using std::cos;
+  const T a = abs(long_speed_mps);
+  if (internal::value_of(a) >= p.low_speed_damping_speed_mps) return T(0.0);
+  return 0.5 * (1.0 + cos(std::numbers::pi * a / p.low_speed_damping_speed_mps));
 }
 /// The deflection's damping d_x, d_y of eq. (22/24) with the low-speed part at v_x.
 struct DeflectionDamping {
