@@ -188,6 +188,14 @@ void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
   d.lockup_full_radps = t.number_in("lockup_full_radps", 0, 2000);
   if (d.lockup_full_radps <= d.lockup_start_radps)
     throw t.error("lockup_full_radps", "must exceed lockup_start_radps");
+  d.lockup_capacity_nm = t.number_in("lockup_capacity_nm", 0.0, 0, 1e6);
+  d.lockup_engage_time_s = t.number_in("lockup_engage_time_s", d.lockup_engage_time_s, 0, 10);
+  d.lockup_speed_ratio_start =
+      t.number_in("lockup_speed_ratio_start", d.lockup_speed_ratio_start, 0, 1);
+  d.lockup_speed_ratio_full =
+      t.number_in("lockup_speed_ratio_full", d.lockup_speed_ratio_full, 0, 1);
+  if (d.lockup_speed_ratio_full <= d.lockup_speed_ratio_start)
+    throw t.error("lockup_speed_ratio_full", "must exceed lockup_speed_ratio_start");
   d.gear_ratios = t.numbers("gear_ratios");
   if (d.gear_ratios.empty()) throw t.error("gear_ratios", "needs at least one gear");
   d.reverse_ratio = t.number_in("reverse_ratio", 0.1, 50);

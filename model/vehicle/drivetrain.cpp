@@ -37,15 +37,29 @@ double delivered_engine_torque_nm(const DrivetrainParams& p, double throttle, do
   return std::max(te + cut_nm, std::min(te, engine_torque_nm(p, 0.0, speed_radps)));
 }
 
-double lockup_fraction(const DrivetrainParams& p, double turbine_radps) noexcept {
-  return std::clamp((std::abs(turbine_radps) - p.lockup_start_radps) /
-                        (p.lockup_full_radps - p.lockup_start_radps),
-                    0.0, 1.0);
+double lockup_fraction(const DrivetrainParams& p, double turbine_radps,
+                       double engine_radps) noexcept {
+  const double by_speed = std::clamp((std::abs(turbine_radps) - p.lockup_start_radps) /
+                                         (p.lockup_full_radps - p.lockup_start_radps),
+                                     0.0, 1.0);
+  if (by_speed == 0.0) return 0.0;
+  // near coupling: the turbine within (1 - ratio) of the engine speed
+  const double ratio = std::abs(turbine_radps) / std::max(std::abs(engine_radps), 1.0);
+  return by_speed * std::clamp((ratio - p.lockup_speed_ratio_start) /
+                                   (p.lockup_speed_ratio_full - p.lockup_speed_ratio_start),
+                               0.0, 1.0);
 }
 
 Drivetrain::Drivetrain(const DrivetrainParams& p, VehicleState& state, const VehicleInputs& inputs,
                        const VehicleWorkspace& work, const HalfShafts* shafts)
-    : p_(p), state_(state), inputs_(inputs), work_(work), shafts_(shafts) {}
+    : p_(p),
+      state_(state),
+      inputs_(inputs),
+      work_(work),
+      shafts_(shafts),
+      lockup_capacity_(p.lockup_capacity_nm > 0 ? p.lockup_capacity_nm
+                                                : *std::max_element(p.full_load_torque_nm.begin(),
+                                                                    p.full_load_torque_nm.end())) {}
 
 void Drivetrain::mass_matrix(const Vector& y, Matrix& m) const noexcept {
   (void)y;
@@ -55,9 +69,11 @@ void Drivetrain::mass_matrix(const Vector& y, Matrix& m) const noexcept {
 double Drivetrain::coupling_torque_nm(double engine_radps, double carrier_radps) const noexcept {
   if (work_.turbine_ratio == 0) return 0.0;
   const double slip = engine_radps - work_.turbine_ratio * carrier_radps;
-  return (p_.converter_capacity_nms2 * std::abs(engine_radps) +
-          work_.lockup_fraction * p_.lockup_damping_nms) *
-         slip;
+  // the lock-up clutch: a stiff damper while it holds, at most its capacity while it slips
+  const double capacity = work_.lockup_fraction * lockup_capacity_;
+  const double lockup =
+      std::clamp(work_.lockup_fraction * p_.lockup_damping_nms * slip, -capacity, capacity);
+  return p_.converter_capacity_nms2 * std::abs(engine_radps) * slip + lockup;
 }
 
 void Drivetrain::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {

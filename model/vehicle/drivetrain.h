@@ -20,11 +20,13 @@ double engine_torque_nm(const DrivetrainParams& p, double throttle, double speed
 double delivered_engine_torque_nm(const DrivetrainParams& p, double throttle, double speed_radps,
                                   double cut_nm) noexcept;
 
-/// Lock-up clutch engagement [0..1] at a turbine speed. Evaluated once per step from the step's
+/// Lock-up clutch engagement [0..1] at a turbine speed (above lockup_start_radps) and near the
+/// converter's coupling point (turbine/engine speed ratio). Evaluated once per step from the step's
 /// start state (VehicleModel::begin_step) and frozen: as a function of w_t inside the step its
 /// slope times the slip makes dT_c/dw_t > 0 at large slip, an unstable mode (~5e4 1/s at a
 /// launch) that the linearised implicit Euler of eq. (8) turns over once h lambda > 1.
-double lockup_fraction(const DrivetrainParams& p, double turbine_radps) noexcept;
+double lockup_fraction(const DrivetrainParams& p, double turbine_radps,
+                       double engine_radps) noexcept;
 
 class Drivetrain final : public solver::MechanicalBlock<2> {
  public:
@@ -48,6 +50,7 @@ class Drivetrain final : public solver::MechanicalBlock<2> {
   const VehicleInputs& inputs_;
   const VehicleWorkspace& work_;
   const HalfShafts* shafts_;
+  double lockup_capacity_;  ///< [N m] (DrivetrainParams::lockup_capacity_nm or the engine's peak)
 };
 
 }  // namespace rig::model::vehicle

@@ -76,7 +76,14 @@ void VehicleModel::begin_step(double h) noexcept {
   work_.turbine_ratio = e.turbine_ratio;
   work_.output_ratio = e.output_ratio;
   work_.engine_torque_cut_nm = e.engine_torque_cut_nm;
-  work_.lockup_fraction = lockup_fraction(p_.drivetrain, e.turbine_ratio * state_.drivetrain_z(1));
+  const double target = lockup_fraction(p_.drivetrain, e.turbine_ratio * state_.drivetrain_z(1),
+                                        state_.drivetrain_z(0));
+  const double ramp =
+      p_.drivetrain.lockup_engage_time_s > 0 ? h / p_.drivetrain.lockup_engage_time_s : 1.0;
+  if (state_.shift_from_gear == 0)  // a running shift holds it as it is
+    state_.lockup_fraction =
+        std::min(target, state_.lockup_fraction + ramp);  // closes slowly, opens at once
+  work_.lockup_fraction = state_.lockup_fraction;
   blocks_->update_contacts();
   blocks_->sequence().begin_step(h);  // eq. (8) up to z^u = M_VI^-1 q of the framework (eq. 46)
 }

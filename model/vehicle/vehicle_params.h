@@ -104,6 +104,19 @@ struct DrivetrainParams {
   double lockup_damping_nms = 50;           ///< lock-up clutch, fully engaged
   double lockup_start_radps = 120;          ///< turbine speed where lock-up starts
   double lockup_full_radps = 180;
+  /// The lock-up closes only near the converter's coupling point: from this turbine/engine speed
+  /// ratio on (fully at lockup_speed_ratio_full). The control of an automatic keeps it open while
+  /// the converter slips hard (a full-throttle launch); a clutch closed across 100+ rad/s of slip
+  /// would dump the engine's flywheel into the wheels and spin them up.
+  /// The lock-up clutch's torque capacity, fully engaged (scaled by the engagement): it slips
+  /// beyond it [N m]; 0: the engine's peak full-load torque.
+  double lockup_capacity_nm = 0;
+  /// The lock-up closes over this time (its pressure ramp); it opens at once, except that a
+  /// running shift holds it as it is (else, at h = 5 ms, the engine's lag behind the new gear
+  /// in the inertia phase opens it and the engine flares) [s].
+  double lockup_engage_time_s = 0.5;
+  double lockup_speed_ratio_start = 0.80;
+  double lockup_speed_ratio_full = 0.90;
   std::vector<double> gear_ratios{4.2, 2.4, 1.5, 1.0, 0.8, 0.65};
   double reverse_ratio = 3.6;
   double final_drive_ratio = 3.5;

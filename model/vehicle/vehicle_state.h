@@ -38,6 +38,7 @@ struct VehicleState {
   int shift_from_gear = 0;         ///< the gear being left while a timed shift runs, else 0
   bool shift_torque_first = true;  ///< phase order: torque phase first (power-on upshift)
   double shift_inertia_s = 0;      ///< the running shift's inertia phase (stretched at part load)
+  double lockup_fraction = 0;      ///< the lock-up clutch's engagement [0..1] (ramped in)
   // ---- quasi-static memory of the last step ----
   /// Rack travel at the wheel after the tie-rod compliance: where eq. (29) is evaluated next.
   std::array<double, kMaxWheels> rack_at_wheel_m{};

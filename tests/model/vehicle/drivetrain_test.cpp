@@ -155,8 +155,9 @@ void expect_smooth_full_throttle_shifts(const VehicleParams& p, double seconds) 
                 r.gear[k0 - 1], r.gear[k0], r.t_s[k0], 3.6 * r.v_mps[k0], lift_max);
     EXPECT_LT(lift_max, 1.0) << "upshift at " << r.t_s[k0];
   }
-  // first gear at full throttle asks for more than the rear tires can give (no traction control:
-  // the wheels spin at the launch, as on main); from the first upshift on they must grip
+  // first gear at full throttle runs the rear tires near their peak (F_x/F_z ~ 1.2): the
+  // lock-up must close near coupling and slowly (lockup_speed_ratio_*, lockup_engage_time_s),
+  // or it spins them up; they grip from 2 m/s on, in first gear too
   double slip_max = 0, v_at = 0, launch_slip = 0;
   for (std::size_t k = 0; k < n; ++k) {
     if (r.v_mps[k] <= 2) continue;
@@ -168,6 +169,7 @@ void expect_smooth_full_throttle_shifts(const VehicleParams& p, double seconds) 
       "upshift on (at %.1f km/h); 0-100 km/h %.2f s\n",
       launch_slip, slip_max, 3.6 * v_at, r.t100_s);
   EXPECT_LT(slip_max, 0.15);
+  EXPECT_LT(launch_slip, 0.15);
 }
 
 TEST(Drivetrain, FullThrottleShiftsWithoutJoltOrWheelSpin) {
@@ -211,6 +213,19 @@ TEST(DrivetrainConfig, ShiftKeysAreOptionalAndCheckedWithFileAndLine) {
   } catch (const io::config::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("long_shift.toml:"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("shift_time_s"), std::string::npos) << e.what();
+  }
+  // the lock-up's coupling window must open upwards
+  const auto window = edited_sedan("lockup.toml", [](auto& t) {
+    erase_line(t, "lockup_speed_ratio_full");
+    t.insert(t.find("lockup_engage_time_s"), "lockup_speed_ratio_full = 0.7\n");
+  });
+  try {
+    (void)io::config::load_vehicle_file(window);
+    FAIL() << "no error";
+  } catch (const io::config::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("lockup.toml:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("must exceed lockup_speed_ratio_start"), std::string::npos)
+        << e.what();
   }
 }
 
