@@ -22,8 +22,18 @@ int first_gear_request(const RigConfig& config) {
   return static_cast<int>(std::lround(first.value[i]));
 }
 
-/// A VehicleModel at step h, in equilibrium at rest or at the initial speed; the throttle that
-/// holds that speed is reported (a driver or ECU that wants the steady state feeds it).
+/// Reports the throttle that holds the initial speed (a driver or ECU that wants the steady
+/// state feeds it).
+void report_equilibrium(double speed_mps, const model::vehicle::Equilibrium& e) {
+  if (speed_mps == 0) return;
+  std::cerr << "rig: initial speed " << speed_mps << " m/s: steady state in gear " << e.gear
+            << ", throttle " << e.throttle << " holds it";
+  if (std::abs(e.residual_ax_mps2) > 0.01)
+    std::cerr << " (not quite: a_x " << e.residual_ax_mps2 << " m/s^2 left at that throttle)";
+  std::cerr << "\n";
+}
+
+/// A VehicleModel at step h, in equilibrium at rest or at the initial speed.
 std::unique_ptr<model::SteppedModel> make_vehicle_model(
     const io::config::VehicleModelSettings& settings, const RigConfig& config) {
   const bool assist_input = config.routing.assist_from_input;
@@ -33,18 +43,12 @@ std::unique_ptr<model::SteppedModel> make_vehicle_model(
   params.fault_limits = config.rig.fault_limits;
   auto m = std::make_unique<model::vehicle::VehicleModel>(params, step_s);
   const double v = settings.initial_speed_mps;
-  const model::vehicle::VehicleModel::Equilibrium e = m->settle(v, first_gear_request(config));
-  if (v != 0) {
-    std::cerr << "rig: initial speed " << v << " m/s: steady state in gear " << e.gear
-              << ", throttle " << e.throttle << " holds it";
-    if (std::abs(e.residual_ax_mps2) > 0.01)
-      std::cerr << " (not quite: a_x " << e.residual_ax_mps2 << " m/s^2 left at that throttle)";
-    std::cerr << "\n";
-  }
+  report_equilibrium(v, m->settle(v, first_gear_request(config)));
   return m;
 }
 
-/// A model::combination::Combination; its parallel option runs on the rig's worker thread.
+/// A model::combination::Combination, in equilibrium at rest or at the initial speed; its parallel
+/// option runs on the rig's worker thread.
 std::unique_ptr<model::SteppedModel> make_combination_model(
     const io::config::CombinationModelSettings& settings, const RigConfig& config) {
   const bool assist_input = config.routing.assist_from_input;
@@ -61,7 +65,8 @@ std::unique_ptr<model::SteppedModel> make_combination_model(
   p.begin_step_runner = make_thread_begin_step_runner;
   p.newton = model::combination::default_combination_newton_params();
   auto m = std::make_unique<model::combination::Combination>(p, step_s);
-  if (settings.initial_speed_mps != 0) m->set_forward_speed(settings.initial_speed_mps);
+  const double v = settings.initial_speed_mps;
+  report_equilibrium(v, m->settle(v, first_gear_request(config)));
   return m;
 }
 

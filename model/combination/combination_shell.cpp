@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 namespace rig::model::combination {
 namespace {
@@ -100,6 +101,30 @@ void CombinationShell::reset(double x_m, double y_m, double yaw_rad) noexcept {
 
 void CombinationShell::set_forward_speed(double speed_mps) noexcept {
   for (auto& u : units_) u->set_forward_speed(speed_mps);
+}
+
+vehicle::Equilibrium CombinationShell::settle(double speed_mps, int gear_request) {
+  std::vector<vehicle::VehicleModel::Pose> poses;
+  poses.reserve(units_.size());
+  for (auto& u : units_) poses.push_back(u->begin_settle(speed_mps));
+  vehicle::Equilibrium e = vehicle::settle_loop(
+      h_, speed_mps, gear_request, [&](Signals& s) { return step(s) == StepStatus::kOk; },
+      [&] {
+        for (auto& u : units_) u->hold_plane_motion(speed_mps);
+      },
+      [&] { return units_[0]->state().acceleration_mps2.x(); });
+  // back by one translation (the leading unit's): the settled heave and pitch moved the hitch
+  // points, the units' own start poses would no longer meet the joints
+  const vehicle::VehicleState& lead = units_[0]->state();
+  const double dx = lead.framework_y(0) - poses[0].x_m, dy = lead.framework_y(1) - poses[0].y_m;
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    const vehicle::VehicleState& u = units_[k]->state();
+    units_[k]->end_settle({u.framework_y(0) - dx, u.framework_y(1) - dy, poses[k].yaw_rad},
+                          speed_mps);
+  }
+  time_s_ = 0;
+  e.gear = units_[0]->state().gear;
+  return e;
 }
 
 StepStatus CombinationShell::step(Signals& signals) noexcept {

@@ -58,6 +58,10 @@ class CombinationShell : public SteppedModel {
   /// the rod straight back, at its length); the coupling at its static state.
   void reset(double x_m, double y_m, double yaw_rad) noexcept;
   void set_forward_speed(double speed_mps) noexcept;
+  /// The start in equilibrium of the whole chain (model/vehicle/vehicle_equilibrium.h): at rest
+  /// with every brake holding, or at a forward speed in line with the throttle found that holds
+  /// it (the leading unit's a_x); every unit back at its pose, the clock at 0. Before the loop.
+  vehicle::Equilibrium settle(double speed_mps, int gear_request = 99);
   [[nodiscard]] int unit_count() const noexcept { return static_cast<int>(units_.size()); }
   [[nodiscard]] vehicle::VehicleModel& unit(int i) noexcept {
     return *units_[static_cast<std::size_t>(i)];

@@ -12,6 +12,7 @@
 #include "model/solver/couplable_system.h"
 #include "model/stepped_model.h"
 #include "model/vehicle/vehicle_blocks.h"
+#include "model/vehicle/vehicle_equilibrium.h"
 #include "model/vehicle/vehicle_faults.h"
 #include "model/vehicle/vehicle_inputs.h"
 #include "model/vehicle/vehicle_state.h"
@@ -84,13 +85,19 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   /// deflections, gear, engine and converter) with the chassis speed held and the throttle found
   /// that holds it - then puts the vehicle back at its pose with the clock at 0. Allocation-free;
   /// runs some thousand steps (construction time, before the loop).
-  struct Equilibrium {
-    double throttle = 0;          ///< the throttle that holds the speed (0 at rest) [0..1]
-    double residual_ax_mps2 = 0;  ///< a_x left at that throttle (non-zero: throttle at a bound)
-    int gear = 0;                 ///< the automatic's gear in it
-  };
   /// gear_request: the gear the run starts in (99 automatic), used when rolling.
+  using Equilibrium = vehicle::Equilibrium;
   Equilibrium settle(double speed_mps, int gear_request = 99) noexcept;
+  /// settle()'s stages, for a combination's units (CombinationShell::settle): the pose to come
+  /// back to (rolling: the forward speed set); the in-plane motion held after each step (speed
+  /// v, no lateral speed, no yaw rate; heave, pitch and roll settle freely); back at the pose
+  /// with the clock at 0 and the motion as held.
+  struct Pose {
+    double x_m = 0, y_m = 0, yaw_rad = 0;
+  };
+  Pose begin_settle(double speed_mps) noexcept;
+  void hold_plane_motion(double speed_mps) noexcept;
+  void end_settle(const Pose& pose, double speed_mps) noexcept;
 
  private:
   VehicleParams p_;

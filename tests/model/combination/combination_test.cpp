@@ -104,6 +104,57 @@ TEST(Combination, StaticHitchLoadAndNoDrift) {
   }
 }
 
+// Start in equilibrium (issue 12, part 4) for combinations: at rest with zero inputs, and at a
+// speed with the throttle settle() reports, every unit's |a_x - a_x,steady| and |a_z| stay below
+// 0.05 m/s^2 over the first second; without settle() the start transient is far larger.
+struct FirstSecond {
+  double ax_dev = 0, az = 0, joint = 0;  // over all units; joint: max |g| [m]
+};
+FirstSecond first_second(Combination& c, Signals s) {
+  FirstSecond f;
+  while (c.time_s() < 1.0 - 1e-9) {
+    EXPECT_EQ(c.step(s), StepStatus::kOk);
+    for (int u = 0; u < c.unit_count(); ++u) {
+      const Vec3& a = c.unit(u).state().acceleration_mps2;
+      f.ax_dev = std::max(f.ax_dev, std::abs(a.x()));
+      f.az = std::max(f.az, std::abs(a.z()));
+    }
+    f.joint = std::max(f.joint, c.joint_violation_m(0));
+  }
+  return f;
+}
+
+TEST(Combination, StartsInEquilibriumAtRestAndAtSpeed) {
+  for (const char* file : {kCarTrailer, kTractorSemi}) {
+    for (double v : {0.0, 20.0}) {
+      Combination raw(load(file), 1e-3);
+      Combination c(load(file), 1e-3);
+      Signals s = driver_inputs();
+      s[Signal::kGearRequest] = v == 0 ? 0 : 99;
+      if (v != 0) raw.set_forward_speed(v);
+      const vehicle::Equilibrium e = c.settle(v);
+      EXPECT_EQ(c.time_s(), 0.0);
+      EXPECT_NEAR(c.unit(1).state().framework_z(0), v, 1e-12);
+      s[Signal::kThrottlePedal] = e.throttle;
+      const FirstSecond before = first_second(raw, s);
+      const FirstSecond after = first_second(c, s);
+      std::printf(
+          "%s at %.0f m/s: throttle %.3f (gear %d, a_x left %.4f); first second |a_x| %.4f, "
+          "|a_z| %.4f m/s^2, |g| %.1e m (without settle: %.3f, %.3f)\n",
+          file, v, e.throttle, e.gear, e.residual_ax_mps2, after.ax_dev, after.az, after.joint,
+          before.ax_dev, before.az);
+      if (v != 0) {
+        EXPECT_GT(e.throttle, 0.0);
+      }
+      EXPECT_LT(std::abs(e.residual_ax_mps2), 0.01);
+      EXPECT_LT(after.ax_dev, 0.05);
+      EXPECT_LT(after.az, 0.05);
+      EXPECT_LT(after.joint, 1e-6);
+      EXPECT_NEAR(c.unit(0).state().framework_z(0), v, 0.05 + 0.01 * v);
+    }
+  }
+}
+
 TEST(Combination, LowSpeedCircleArticulationMatchesKinematicEstimate) {
   // Steady circle at 2 m/s (a_y < 0.3 m/s^2: tire slip angles ~0.2 deg): the articulation angle
   // against the kinematic estimate from the hitch offset c behind the car's rear axle and the
