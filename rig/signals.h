@@ -5,7 +5,8 @@
 ///   SIGINT, SIGTERM, SIGHUP (a dropped SSH session): stop cleanly (exit 0, complete logs);
 ///   SIGPIPE: ignored (a closed pipe or socket is an error return, not death);
 ///   SIGUSR1: print the status line (on stderr, by the supervising main thread).
-/// The handlers only set flags and ask the executive to stop (async-signal-safe).
+/// The handlers only set flags and ask the executive to stop (async-signal-safe). The four are
+/// unblocked if the rig inherited them blocked; one already pending then counts at once.
 
 namespace rig {
 

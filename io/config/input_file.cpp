@@ -45,7 +45,10 @@ std::string read_input_file(const std::filesystem::path& file, std::size_t max_b
   if (!S_ISREG(st.st_mode))
     throw ConfigError(where + ": it is " + kind_of(st.st_mode) + ", not a regular file");
   const auto too_large = [&] {
-    return ConfigError(where + ": larger than " + std::to_string(max_bytes >> 10) + " KiB");
+    const bool mib = max_bytes % (std::size_t{1} << 20) == 0;
+    return ConfigError(where + ": larger than " +
+                       std::to_string(mib ? max_bytes >> 20 : max_bytes) +
+                       (mib ? " MiB" : " bytes"));
   };
   if (static_cast<std::size_t>(st.st_size) > max_bytes) throw too_large();
   std::string text(static_cast<std::size_t>(st.st_size), '\0');
