@@ -57,19 +57,25 @@ void SystemdNotifier::send(const std::string& message, std::int64_t wait_ns) {
   if (socket_name_.empty()) return;
   const std::int64_t give_up_ns = steady_ns() + wait_ns;
   while (fd_ >= 0) {
-    if (::send(fd_, message.data(), message.size(), MSG_DONTWAIT | MSG_NOSIGNAL) >= 0) return;
+    if (::send(fd_, message.data(), message.size(), MSG_DONTWAIT | MSG_NOSIGNAL) >= 0) {
+      full_ = false;
+      return;
+    }
     if (errno == EINTR) continue;
     const std::int64_t left_ns = give_up_ns - steady_ns();
     if ((errno != EAGAIN && errno != EWOULDBLOCK) || left_ns <= 0) break;
     pollfd p{fd_, POLLOUT, 0};
     if (::poll(&p, 1, static_cast<int>(left_ns / 1'000'000) + 1) <= 0) break;
   }
+  full_ = true;
   ++dropped_;
 }
 
 void SystemdNotifier::ready() { send("READY=1", kFinalWait_ns); }
 void SystemdNotifier::stopping() { send("STOPPING=1", kFinalWait_ns); }
-void SystemdNotifier::status(const std::string& text) { send("STATUS=" + text, 0); }
+void SystemdNotifier::status(const std::string& text) {
+  send("STATUS=" + text, full_ ? 0 : kWait_ns);
+}
 
 bool SystemdNotifier::maybe_ping(std::uint64_t loop_cycles, std::int64_t now_ns) {
   if (watchdog_ns_ <= 0) return false;
@@ -83,7 +89,7 @@ bool SystemdNotifier::maybe_ping(std::uint64_t loop_cycles, std::int64_t now_ns)
   withholding_ = false;
   last_cycles_ = loop_cycles;
   last_ping_ns_ = now_ns;
-  send("WATCHDOG=1", 0);
+  send("WATCHDOG=1", full_ ? 0 : kWait_ns);
   return true;
 }
 

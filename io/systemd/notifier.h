@@ -4,9 +4,10 @@
 /// loop makes progress, STOPPING=1. Without NOTIFY_SOCKET every call is a no-op. Non-RT thread
 /// only.
 ///
-/// The socket is non-blocking: a notify socket that is not read (its queue full) never holds
-/// the rig. STATUS= and WATCHDOG=1 are then dropped at once; READY=1 and STOPPING=1 wait at
-/// most kFinalWait_ns for room. Dropped messages are counted (dropped()).
+/// The socket is non-blocking: a notify socket that is not read (its queue full: 10 datagrams by
+/// default, net.unix.max_dgram_qlen) never holds the rig. STATUS= and WATCHDOG=1 wait at most
+/// kWait_ns for room (none while the socket has been found full), READY=1 and STOPPING=1 at
+/// most kFinalWait_ns; what does not fit is dropped and counted (dropped()).
 
 #include <cstdint>
 #include <string>
@@ -15,7 +16,9 @@ namespace rig::io::systemd {
 
 class SystemdNotifier {
  public:
-  /// The longest READY=1 or STOPPING=1 waits for a full notify socket.
+  /// The longest STATUS= or WATCHDOG=1 waits for a full notify socket (a slow reader).
+  static constexpr std::int64_t kWait_ns = 20'000'000;
+  /// The longest READY=1 or STOPPING=1 waits.
   static constexpr std::int64_t kFinalWait_ns = 500'000'000;
 
   /// Reads NOTIFY_SOCKET (a path or "@abstract") and WATCHDOG_USEC (sd_watchdog_enabled).
@@ -51,6 +54,7 @@ class SystemdNotifier {
   int fd_ = -1;
   std::string socket_name_;
   std::uint64_t dropped_ = 0;
+  bool full_ = false;  ///< the last send found the socket full: STATUS/WATCHDOG do not wait
   std::int64_t watchdog_ns_ = 0;
   std::int64_t last_ping_ns_ = 0;
   std::uint64_t last_cycles_ = 0;

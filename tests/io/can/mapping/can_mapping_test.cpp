@@ -94,10 +94,10 @@ TEST_F(CanMappingErrors, UnknownNamesAndBadValuesNameTheLine) {
   EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
                        "checksum = { signal = \"EPS_Checksum\", bytes = " +
                        bytes_65 + "] }\n"),
-              HasSubstr(":3: [checksum] bytes: 65 entries, at most 8"));
+              HasSubstr(":4: [checksum] bytes: 65 entries, at most 8"));
   EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
                        "checksum = { signal = \"EPS_Checksum\", bytes = [2, 0, 2] }\n"),
-              HasSubstr(":3: [checksum] bytes: byte 2 listed twice"));
+              HasSubstr(":4: [checksum] bytes: byte 2 listed twice"));
   EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
                        "counter = { signal = \"EPS_Counter\", modulus = 17 }\n"),
               HasSubstr("modulus"));
