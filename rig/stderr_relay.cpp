@@ -43,6 +43,7 @@ void copy_until_closed(int from, int to) {
 }  // namespace
 
 StderrRelay::StderrRelay() {
+  if (::fcntl(2, F_GETFD) < 0) return;  // no stderr at all: the pipe must not become fd 2
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) return;
   (void)::fcntl(fds[1], F_SETPIPE_SZ, kPipeBytes);  // best effort: 64 KiB otherwise
