@@ -15,12 +15,18 @@ namespace rig::io {
 struct RunInfo {
   double period_s = 0.001;
   bool offline = false;
-  bool sched_fifo = false;   ///< SCHED_FIFO granted
-  int priority = 0;          ///< granted priority (0 if none)
+  bool sched_fifo = false;     ///< SCHED_FIFO granted
+  int priority = 0;            ///< granted priority (0 if none)
   bool memory_locked = false;  ///< mlockall granted
-  int cpu = -1;              ///< pinned CPU, -1 if not pinned
-  std::string policy;        ///< overrun policy: "skip", "catch-up" or "abort-after=N"
+  int cpu = -1;                ///< pinned CPU, -1 if not pinned
+  std::string policy;          ///< overrun policy: "skip", "catch-up" or "abort-after=N"
   std::string config_file;
+};
+
+/// What an output sink could not write (a full disk, an I/O error): counted, never silent.
+struct WriteFailures {
+  std::uint64_t count = 0;  ///< records (messages, lines) lost
+  std::string what;         ///< e.g. "LCM log out/run.lcm: No space left on device"
 };
 
 class SnapshotSink {
@@ -37,6 +43,8 @@ class SnapshotSink {
   virtual void consume(const Snapshot& snapshot, std::uint64_t dropped_before) = 0;
   /// Called once after the loop stopped and the ring is drained: flush and close.
   virtual void stop() = 0;
+  /// After stop(): what a file-writing sink failed to write (none by default).
+  [[nodiscard]] virtual WriteFailures write_failures() const { return {}; }
 };
 
 }  // namespace rig::io

@@ -2,13 +2,13 @@
 
 #include <array>
 #include <cctype>
-#include <fstream>
 #include <ostream>
 #include <vector>
 
 #include "io/can/dbc/dbc_parser.h"
 #include "io/can/mapping/can_mapping.h"
 #include "io/config/config_error.h"
+#include "io/config/input_file.h"
 #include "io/config/strict_table.h"
 #include "io/config/vehicle_file.h"
 #include "rig/config.h"
@@ -175,10 +175,12 @@ const FileKind* recognize(const FileContent& content, const std::string& file, s
 FileContent read_file_content(const std::filesystem::path& file) {
   FileContent content;
   content.path = file;
-  std::ifstream in(file, std::ios::binary);
-  content.head.resize(kHeadBytes);
-  in.read(content.head.data(), static_cast<std::streamsize>(kHeadBytes));
-  content.head.resize(static_cast<std::size_t>(in.gcount()));
+  try {
+    content.head = io::config::read_input_file(file).substr(0, kHeadBytes);
+  } catch (const io::config::ConfigError& e) {
+    content.toml_error = e.what();
+    return content;
+  }
   try {
     content.toml = io::config::load_toml_file(file);
   } catch (const io::config::ConfigError& e) {
@@ -198,9 +200,10 @@ const FileKind* find_file_kind(std::string_view name) {
 
 int check_file(const std::string& file, const FileKind* kind, std::ostream& out,
                std::ostream& err) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) {
-    err << file << ":1: cannot read file (missing or not a regular file)\n";
+  try {
+    (void)io::config::read_input_file(file);  // a regular file of bounded size, or why not
+  } catch (const io::config::ConfigError& e) {
+    err << e.what() << "\n";
     return 2;
   }
   const FileContent content = read_file_content(file);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <string_view>
 
@@ -28,17 +29,38 @@ void read_vehicle_faults(io::config::StrictTable& t, RigSettings& s) {
   s.hold_on_vehicle_fault = t.choice("on_vehicle_fault", "stop", {"stop", "hold"}) == "hold";
 }
 
+/// period_s / step_s: the loop counts in whole nanoseconds, so a period must be one (else it
+/// rounds: to 0 ns below 0.5 ns, and the first miss divides by it) and within [1e-5, 1] s.
+double read_period(io::config::StrictTable& t, const char* key) {
+  const double v = t.number(key);
+  char text[160];
+  if (!(v >= kMinPeriod_s && v <= kMaxPeriod_s)) {
+    std::snprintf(text, sizeof text, "value %g out of range: must be > 0, within [%g, %g] s", v,
+                  kMinPeriod_s, kMaxPeriod_s);
+    throw t.error(key, text);
+  }
+  const double ns = v * 1e9;
+  if (std::abs(ns - std::round(ns)) > 1e-3) {
+    std::snprintf(text, sizeof text, "%.12g s is not a whole number of nanoseconds", v);
+    throw t.error(key, text);
+  }
+  return v;
+}
+
 RigSettings read_rig(io::config::StrictTable& t) {
   RigSettings s;
   if (t.has("period_s") && t.has("step_s"))
     throw t.error("step_s", "give period_s or step_s, not both");
   const char* period_key = t.has("step_s") ? "step_s" : "period_s";
-  if (t.has(period_key)) {
-    s.period_s = t.number(period_key);
-    if (!(s.period_s > 0.0) || s.period_s > 1.0)
-      throw t.error(period_key, "must be > 0 and <= 1 s");
-  }
+  if (t.has(period_key)) s.period_s = read_period(t, period_key);
+  // 0: until stopped; else at least one period (NaN, inf and negative values are out of range).
   s.duration_s = t.number_in("duration_s", 0.0, 0.0, 1e9);
+  if (s.duration_s > 0 && s.duration_s < s.period_s) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%g s is shorter than one period (%g s); 0 runs until stopped",
+                  s.duration_s, s.period_s);
+    throw t.error("duration_s", text);
+  }
   s.priority = static_cast<int>(t.number_in("priority", 80, 1, 99));
   s.cpu = static_cast<int>(t.number_in("cpu", -1, -1, 1023));
   const std::string policy =
@@ -46,6 +68,9 @@ RigSettings read_rig(io::config::StrictTable& t) {
   s.policy = *overrun_policy_by_key(policy);
   s.abort_after = static_cast<int>(t.number_in("abort_after", 10, 1, 1e6));
   s.status_interval_s = t.number_in("status_interval_s", 5.0, 0.1, 3600.0);
+  s.keep_logs = static_cast<int>(t.integer("keep_logs", s.keep_logs));
+  if (s.keep_logs < 0 || s.keep_logs > kMaxKeepLogs)
+    throw t.error("keep_logs", "must be an integer in [0, " + std::to_string(kMaxKeepLogs) + "]");
   read_vehicle_faults(t, s);
   t.finish();
   return s;

@@ -20,6 +20,11 @@
 
 namespace rig {
 
+/// The range of [rig] period_s (step_s), also a whole number of nanoseconds.
+inline constexpr double kMinPeriod_s = 1e-5;
+inline constexpr double kMaxPeriod_s = 1.0;
+inline constexpr int kMaxKeepLogs = 1000;
+
 /// [rig]
 struct RigSettings {
   double period_s = 0.001;  ///< loop period = model step size
@@ -29,6 +34,9 @@ struct RigSettings {
   OverrunPolicy policy = OverrunPolicy::kSkip;
   int abort_after = 10;            ///< consecutive misses for kAbortAfter
   double status_interval_s = 5.0;  ///< stderr / systemd STATUS summary interval
+  /// Earlier runs' output files kept as NAME.1 (the latest) .. NAME.keep_logs
+  /// (io/log/output_file.h).
+  int keep_logs = 10;
   /// fault_roll_limit_rad, fault_pitch_limit_rad, fault_speed_limit_mps, fault_rate_limit_radps:
   /// beyond them a vehicle's state is a fault (model/vehicle/vehicle_faults.h), every unit's.
   model::vehicle::FaultLimits fault_limits{};

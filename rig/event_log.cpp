@@ -15,7 +15,8 @@ void copy_into(std::span<char> out, std::string_view text) noexcept {
 
 }  // namespace
 
-EventLog::EventLog(const std::string& path, std::size_t capacity) : ring_(capacity), file_(path) {}
+EventLog::EventLog(const std::string& path, std::size_t capacity, int keep)
+    : ring_(capacity), file_(path, keep) {}
 
 EventLog::~EventLog() { stop(); }
 

@@ -17,9 +17,9 @@ namespace rig {
 
 class EventLog {
  public:
-  /// `path` empty: records are counted and discarded (no file). Opens the file here; throws
-  /// std::runtime_error if it cannot.
-  explicit EventLog(const std::string& path, std::size_t capacity = 4096);
+  /// `path` empty: records are counted and discarded (no file). Opens the file here (an earlier
+  /// one kept as NAME.1 .. NAME.keep); throws io::log::OutputFileError if it cannot.
+  explicit EventLog(const std::string& path, std::size_t capacity = 4096, int keep = 10);
   ~EventLog();
   EventLog(const EventLog&) = delete;
   EventLog& operator=(const EventLog&) = delete;
@@ -37,6 +37,9 @@ class EventLog {
   void stop();
 
   [[nodiscard]] std::uint64_t lost() const noexcept { return lost_.load(); }
+  /// The file's failed writes (a full disk): lines lost there, and the first error.
+  [[nodiscard]] std::uint64_t write_failures() const noexcept { return file_.write_failures(); }
+  [[nodiscard]] const std::string& write_error() const noexcept { return file_.write_error(); }
 
  private:
   /// Claims a slot and fills its header, or counts the record as lost (nullptr).

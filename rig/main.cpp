@@ -1,5 +1,6 @@
 /// @file
-/// `rig`: command line. Exit codes: 0 ok, 2 bad usage or configuration, 1 runtime failure.
+/// `rig`: command line. Exit codes: 0 ok, 2 bad usage or configuration, 1 runtime failure, 3 the
+/// run ended as asked but an output lost data (a failed write: a full disk).
 
 #include <algorithm>
 #include <csignal>
@@ -14,6 +15,7 @@
 
 #include "rig/check.h"
 #include "rig/run.h"
+#include "rig/signals.h"
 
 namespace {
 
@@ -30,6 +32,7 @@ int check(const std::vector<std::string>& files, const std::string& kind_name) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  rig::install_signal_handlers();  // before anything else (rig/signals.h)
   CLI::App app{"rig: a hard-real-time hardware-in-the-loop vehicle simulator"};
   app.set_version_flag("--version", std::string("rig ") + RIG_VERSION);
   app.require_subcommand(1);
@@ -38,10 +41,9 @@ int main(int argc, char** argv) {
   std::string stall;
   auto* run_cmd = app.add_subcommand("run", "run the simulator loop");
   run_cmd->add_option("--config", run.config_file, "configuration file (TOML)")->required();
-  run_cmd
-      ->add_option("--duration", run.duration_s,
-                   "stop after S seconds (default: [rig] duration_s or forever)")
-      ->check(CLI::PositiveNumber);
+  run_cmd->add_option("--duration", run.duration_s,
+                      "stop after S seconds (default: [rig] duration_s or forever); finite, at "
+                      "least one period");
   run_cmd->add_flag("--offline", run.offline, "no sleeping, as fast as possible, deterministic");
   run_cmd->add_option("--can", run.can, "CAN interface, or 'none'");
   run_cmd->add_option("--lcm-url", run.lcm_url, "LCM URL, or 'none'");

@@ -1,8 +1,5 @@
 #include "rig/run.h"
 
-#include <atomic>
-#include <csignal>
-
 #include "io/systemd/notifier.h"
 #include "rig/executive.h"
 #include "rig/rt/clock.h"
@@ -11,30 +8,14 @@
 #include "rig/run_finish.h"
 #include "rig/run_start.h"
 #include "rig/run_supervision.h"
+#include "rig/signals.h"
+#include "rig/stderr_relay.h"
 
 namespace rig {
-namespace {
-
-std::atomic<Executive*> g_executive{nullptr};
-volatile std::sig_atomic_t g_signal = 0;
-
-extern "C" void on_signal(int signo) {
-  g_signal = signo;
-  if (Executive* e = g_executive.load()) e->request_stop();
-}
-
-void install_signal_handlers() {
-  struct sigaction sa {};
-  sa.sa_handler = on_signal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
-}
-
-}  // namespace
 
 int run(const RunOptions& options) {
-  install_signal_handlers();
+  install_signal_handlers();  // main() did already; a second time is harmless
+  const StderrRelay relay;    // no stderr reader can hold the rig (rig/stderr_relay.h)
   RunParts parts;
   if (const int exit_code = assemble(options, parts); exit_code != 0) return exit_code;
 
@@ -45,12 +26,11 @@ int run(const RunOptions& options) {
   const std::int64_t wall_start_ns = wall.now_ns();
   Executive exec(parts.params, loop_clock, *parts.model, parts.driver.get(), parts.io_adapters(),
                  parts.snapshot_sinks(), *parts.log, parts.config.routing.source);
-  g_executive.store(&exec);
-  if (g_signal != 0) exec.request_stop();
+  set_signal_target(&exec);  // a stop signal during assembly stops it before its first cycle
 
   rt::CpuDmaLatency dma_latency;  // held for the whole real-time run
   if (!start_real_time(exec, *parts.log, parts.params, options, dma_latency, wall)) {
-    g_executive.store(nullptr);
+    set_signal_target(nullptr);
     return 1;
   }
   io::systemd::SystemdNotifier notifier;
@@ -59,9 +39,14 @@ int run(const RunOptions& options) {
   supervise(exec, notifier, parts.config.rig.status_interval_s, wall);
   notifier.stopping();
   const StopReason reason = exec.join();
-  g_executive.store(nullptr);
-  return finish_run(exec, *parts.log, {reason, parts.params.abort_after, wall_start_ns}, options,
-                    notifier, wall);
+  set_signal_target(nullptr);
+  const auto sinks = parts.snapshot_sinks();
+  FinishInputs finish{reason,
+                      parts.params.abort_after,
+                      wall_start_ns,
+                      {sinks.begin(), sinks.end()},
+                      parts.summary.get()};
+  return finish_run(exec, *parts.log, finish, options, notifier, wall);
 }
 
 }  // namespace rig

@@ -1,9 +1,12 @@
 #include "rig/run_assembly.h"
 
+#include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <stdexcept>
 
 #include "io/config/config_error.h"
+#include "io/log/output_file.h"
 #include "rig/model_factory.h"
 #include "rig/sinks.h"
 
@@ -16,6 +19,60 @@ std::vector<T*> pointers(const std::vector<std::unique_ptr<T>>& owned) {
   out.reserve(owned.size());
   for (const auto& p : owned) out.push_back(p.get());
   return out;
+}
+
+/// A bad command line found after the configuration was read (exit 2).
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// --duration: finite, > 0 and at least one period (0 or none: [rig] duration_s).
+void check_duration(const RunOptions& options, const RigConfig& config) {
+  if (!options.duration_s) return;
+  const double d = *options.duration_s;
+  char text[200];
+  if (!std::isfinite(d) || !(d > 0)) {
+    std::snprintf(text, sizeof text,
+                  "--duration %g: must be a finite number of seconds > 0 (to run until stopped, "
+                  "leave it out with [rig] duration_s = 0)",
+                  d);
+    throw UsageError(text);
+  }
+  if (d < config.rig.period_s) {
+    std::snprintf(text, sizeof text, "--duration %g s is shorter than one period (%g s)", d,
+                  config.rig.period_s);
+    throw UsageError(text);
+  }
+}
+
+/// What the run reads: no output may overwrite it.
+std::vector<std::filesystem::path> input_files(const RigConfig& c) {
+  std::vector<std::filesystem::path> in{c.file};
+  if (c.model.vehicle) in.push_back(c.model.vehicle->file);
+  if (c.model.combination) {
+    for (const auto& f : c.model.combination->unit_files) in.push_back(f);
+  }
+  if (c.can) {
+    in.push_back(c.can->mapping_file);
+    if (c.can->dbc_file) in.push_back(*c.can->dbc_file);
+  }
+  return in;
+}
+
+/// The outputs, last: an earlier run's files are rotated only when everything else loaded.
+void open_outputs(const RunOptions& options, RunParts& parts) {
+  const int keep = parts.config.rig.keep_logs;
+  io::log::check_output_paths({{"--overrun-log", options.overrun_log},
+                               {"--lcm-log", options.lcm_log},
+                               {"--summary-json", options.summary_json}},
+                              input_files(parts.config));
+  parts.sinks = make_sinks(parts.config, options);
+  parts.log = std::make_unique<EventLog>(options.overrun_log, 4096, keep);
+  if (options.summary_json.empty()) return;
+  const int fd = io::log::open_output_file({"--summary-json", options.summary_json}, keep);
+  parts.summary.reset(::fdopen(fd, "w"));
+  if (!parts.summary) throw io::log::OutputFileError("--summary-json: fdopen failed");
 }
 
 }  // namespace
@@ -45,19 +102,20 @@ ExecutiveParams executive_params(const RigConfig& config, const RunOptions& opti
 int assemble(const RunOptions& options, RunParts& parts) {
   try {
     parts.config = load_config(options.config_file);
+    check_duration(options, parts.config);
     parts.io = make_io(parts.config, options);
-    parts.sinks = make_sinks(parts.config, options);
     parts.model = make_model(parts.config);
     parts.driver = make_driver(parts.config);
+    open_outputs(options, parts);
   } catch (const io::config::ConfigError& e) {
     std::cerr << e.what() << "\n";
     return 2;
-  } catch (const std::exception& e) {
+  } catch (const UsageError& e) {
     std::cerr << "rig: " << e.what() << "\n";
-    return 1;
-  }
-  try {
-    parts.log = std::make_unique<EventLog>(options.overrun_log);
+    return 2;
+  } catch (const io::log::OutputFileError& e) {
+    std::cerr << "rig: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "rig: " << e.what() << "\n";
     return 1;

@@ -3,6 +3,7 @@
 /// `rig run`, assembly: the configuration and everything built from it before the loop starts
 /// (model, driver, I/O adapters, sinks, event log, executive parameters).
 
+#include <cstdio>
 #include <memory>
 #include <vector>
 
@@ -17,6 +18,11 @@
 
 namespace rig {
 
+/// Closes a FILE* (the summary file; its errors are checked where it is written).
+struct FileCloser {
+  void operator()(std::FILE* f) const noexcept { (void)std::fclose(f); }
+};
+
 struct RunParts {
   RigConfig config;
   ExecutiveParams params;
@@ -25,6 +31,8 @@ struct RunParts {
   std::unique_ptr<model::SteppedModel> model;
   std::unique_ptr<driver::Driver> driver;
   std::unique_ptr<EventLog> log;
+  /// --summary-json, created before the loop starts (written at the end); null if none.
+  std::unique_ptr<std::FILE, FileCloser> summary;
 
   [[nodiscard]] std::vector<io::CycleIo*> io_adapters() const;
   [[nodiscard]] std::vector<io::SnapshotSink*> snapshot_sinks() const;
@@ -34,7 +42,9 @@ struct RunParts {
 ExecutiveParams executive_params(const RigConfig& config, const RunOptions& options);
 
 /// Builds every part. On failure prints the error to stderr and returns the exit code (2: the
-/// configuration, 1: anything else); 0 when `parts` is complete.
+/// configuration, the command line or an output path; 1: anything else); 0 when `parts` is
+/// complete. Every output file is checked (not twice, not an input, not a symbolic link) and
+/// then created (earlier ones rotated, io/log/output_file.h) only after everything else loaded.
 int assemble(const RunOptions& options, RunParts& parts);
 
 }  // namespace rig

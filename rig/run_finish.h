@@ -4,7 +4,10 @@
 /// stderr and systemd STATUS, --summary-json, and the exit code.
 
 #include <cstdint>
+#include <cstdio>
+#include <vector>
 
+#include "io/snapshot_sink.h"
 #include "io/systemd/notifier.h"
 #include "rig/event_log.h"
 #include "rig/executive.h"
@@ -13,14 +16,20 @@
 
 namespace rig {
 
+/// The run ended as asked, but an output lost data: a write failed (a full disk, an I/O error).
+inline constexpr int kExitOutputLost = 3;
+
 struct FinishInputs {
   StopReason reason = StopReason::kNone;
-  int abort_after = 0;             ///< for the abort message
-  std::int64_t wall_start_ns = 0;  ///< CLOCK_MONOTONIC at assembly's end
+  int abort_after = 0;                         ///< for the abort message
+  std::int64_t wall_start_ns = 0;              ///< CLOCK_MONOTONIC at assembly's end
+  std::vector<const io::SnapshotSink*> sinks;  ///< stopped: their write failures are final
+  std::FILE* summary = nullptr;                ///< --summary-json, opened before the loop
 };
 
-/// Returns the exit code: 0, or 1 (abort-after, non-finite model, a vehicle fault stopped or
-/// held, unwritable summary file).
+/// Returns the exit code: 0; 1 (abort-after, non-finite model, a vehicle fault stopped or held);
+/// else kExitOutputLost if any output failed to write (each failure: an event in the overrun
+/// log if that still works, one stderr line, the summary's `write_failures`).
 int finish_run(const Executive& exec, EventLog& log, const FinishInputs& in,
                const RunOptions& options, io::systemd::SystemdNotifier& notifier, rt::Clock& wall);
 

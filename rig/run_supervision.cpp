@@ -4,6 +4,7 @@
 #include <iostream>
 #include <string>
 
+#include "rig/signals.h"
 #include "rig/summary.h"
 
 namespace rig {
@@ -24,6 +25,8 @@ void supervise(Executive& exec, io::systemd::SystemdNotifier& notifier, double s
       withheld_reported = notifier.withheld();
       std::cerr << "rig: loop stalled at cycle " << exec.cycles() << ": watchdog ping withheld\n";
     }
+    std::cerr.clear();  // a line dropped by a full stderr (rig/stderr_relay.h) set badbit
+    if (take_status_request()) std::cerr << "rig: " << summary_line(exec) << "\n";  // SIGUSR1
     if (now_ns >= next_status_ns) {
       const std::string line = summary_line(exec);
       std::cerr << "rig: " << line << "\n";

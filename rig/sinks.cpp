@@ -25,7 +25,8 @@ std::vector<std::unique_ptr<io::SnapshotSink>> make_sinks(const RigConfig& confi
   io::lcm::LcmSettings lcm = config.lcm;
   if (!options.lcm_url.empty()) lcm.url = options.lcm_url;
   if (lcm.url != "none") sinks.push_back(io::lcm::make_lcm_publisher(lcm));
-  if (!options.lcm_log.empty()) sinks.push_back(io::lcm::make_lcm_log_writer(options.lcm_log, lcm));
+  if (!options.lcm_log.empty())
+    sinks.push_back(io::lcm::make_lcm_log_writer(options.lcm_log, lcm, config.rig.keep_logs));
   return sinks;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "rig/json_text.h"
 #include "rig/vehicle_fault_text.h"
 
 namespace rig {
@@ -70,6 +71,32 @@ std::string decades(const rt::LogHistogram& h) {
   return out;
 }
 
+/// The CAN counters and bus state.
+std::string can_json(const io::IoCounters& c) {
+  return fmt(
+      "{\"bus_state\": \"%s\", \"frames_received\": %llu, \"frames_sent\": %llu, "
+      "\"rx_overflows\": %llu, \"timeouts\": %llu, "
+      "\"checksum_failures\": %llu, \"counter_failures\": %llu, \"bad_frames\": %llu, "
+      "\"unknown_frames\": %llu, "
+      "\"error_frames\": %llu, \"out_of_range\": %llu, \"send_no_buffer\": %llu, "
+      "\"send_dropped\": %llu, "
+      "\"reopens\": %llu}",
+      bus_state_name(c.bus_state), ull(c.frames_received), ull(c.frames_sent), ull(c.rx_overflows),
+      ull(c.timeouts), ull(c.checksum_failures), ull(c.counter_failures), ull(c.bad_frames),
+      ull(c.unknown_frames), ull(c.error_frames), ull(c.out_of_range), ull(c.send_no_buffer),
+      ull(c.send_dropped), ull(c.reopens));
+}
+
+/// [{"output": "LCM log out/run.lcm: No space left on device", "count": 12}, ...]
+std::string write_failures_json(const std::vector<io::WriteFailures>& failures) {
+  std::string j = "[";
+  for (std::size_t i = 0; i < failures.size(); ++i) {
+    j += std::string(i == 0 ? "" : ", ") + "{\"output\": " + json_string(failures[i].what) +
+         ", \"count\": " + std::to_string(failures[i].count) + "}";
+  }
+  return j + "]";
+}
+
 }  // namespace
 
 std::string summary_line(const Executive& e) {
@@ -106,10 +133,11 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
   std::string j = "{\n";
   j += fmt("  \"cycles\": %llu,\n  \"deadline_misses\": %llu,\n", ull(e.cycles()),
            ull(e.deadline_misses()));
-  j += fmt("  \"sim_time_s\": %.9f,\n  \"wall_time_s\": %.9f,\n  \"drift_s\": %.9f,\n",
-           e.sim_time_s(), x.wall_time_s, e.sim_time_s() - e.loop_time_s() + 0.0);
-  j += fmt("  \"period_s\": %.9g,\n  \"offline\": %s,\n", info.period_s,
-           info.offline ? "true" : "false");
+  j += "  \"sim_time_s\": " + json_number(e.sim_time_s(), "%.9f") + ",\n";
+  j += "  \"wall_time_s\": " + json_number(x.wall_time_s, "%.9f") + ",\n";
+  j += "  \"drift_s\": " + json_number(e.sim_time_s() - e.loop_time_s() + 0.0, "%.9f") + ",\n";
+  j += "  \"period_s\": " + json_number(info.period_s) + ",\n";
+  j += fmt("  \"offline\": %s,\n", info.offline ? "true" : "false");
   j += "  \"lateness_ns\": " + quantiles_json(e.lateness()) + ",\n";
   j += "  \"compute_ns\": " + quantiles_json(e.compute()) + ",\n";
   j += "  \"phase_ns\": {";
@@ -128,25 +156,13 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
   j += fmt(
       "  \"skipped_periods\": %llu,\n  \"snapshots_dropped\": %llu,\n  \"events_lost\": %llu,\n",
       ull(e.skipped_periods()), ull(e.snapshots_dropped()), ull(x.events_lost));
-  const io::IoCounters c = e.io_counters();
-  j +=
-      fmt("  \"can\": {\"bus_state\": \"%s\", \"frames_received\": %llu, \"frames_sent\": %llu, "
-          "\"rx_overflows\": %llu, \"timeouts\": %llu, "
-          "\"checksum_failures\": %llu, \"counter_failures\": %llu, \"bad_frames\": %llu, "
-          "\"unknown_frames\": %llu, "
-          "\"error_frames\": %llu, \"out_of_range\": %llu, \"send_no_buffer\": %llu, "
-          "\"send_dropped\": %llu, "
-          "\"reopens\": %llu},\n",
-          bus_state_name(c.bus_state), ull(c.frames_received), ull(c.frames_sent),
-          ull(c.rx_overflows), ull(c.timeouts), ull(c.checksum_failures), ull(c.counter_failures),
-          ull(c.bad_frames), ull(c.unknown_frames), ull(c.error_frames), ull(c.out_of_range),
-          ull(c.send_no_buffer), ull(c.send_dropped), ull(c.reopens));
+  j += "  \"can\": " + can_json(e.io_counters()) + ",\n";
   j += "  \"outputs\": {";
   bool first = true;
   for (const auto& s : model::kSignalTable) {
     if (s.is_input || !e.signals().valid[model::index(s.id)]) continue;
-    j += fmt("%s\"%s\": %.17g", first ? "" : ", ", std::string(s.name).c_str(),
-             e.signals().value[model::index(s.id)]);
+    j += std::string(first ? "" : ", ") + json_string(s.name) + ": " +
+         json_number(e.signals().value[model::index(s.id)], "%.17g");
     first = false;
   }
   j += "},\n";
@@ -154,6 +170,7 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
     j += "  \"vehicle_fault\": " + vehicle_fault_json(e.vehicle_fault(), e.fault_unit_file()) +
          ",\n";
   }
+  j += "  \"write_failures\": " + write_failures_json(x.write_failures) + ",\n";
   j += "  \"stop_reason\": \"" + x.stop_reason + "\",\n";
   j += fmt("  \"exit_code\": %d\n}\n", x.exit_code);
   return j;

@@ -4,6 +4,9 @@
 /// the --summary-json document.
 
 #include <string>
+#include <vector>
+
+#include "io/snapshot_sink.h"
 
 #include "rig/executive.h"
 
@@ -14,6 +17,7 @@ struct SummaryExtras {
   std::string stop_reason;
   int exit_code = 0;
   std::uint64_t events_lost = 0;
+  std::vector<io::WriteFailures> write_failures;  ///< outputs that lost data (a full disk)
 };
 
 /// "cycles 12000, misses 3, lateness p50/p99/p99.9/max 12/40/80/210 us, compute ..."

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "rig/json_text.h"
+
 namespace rig {
 namespace {
 
@@ -11,22 +13,6 @@ const char* index_noun(model::FaultKind k) noexcept {
   if (k == model::FaultKind::kWheelSpin) return ", wheel ";
   if (k == model::FaultKind::kBodyGround) return ", body point ";
   return "";
-}
-
-std::string json_number(double v) {
-  if (!std::isfinite(v)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
 }
 
 }  // namespace

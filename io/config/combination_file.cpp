@@ -14,7 +14,7 @@ CombinationModelSettings read_combination_model(StrictTable& m) {
   const model::road::RoadParams road = read_road(m);
   c.initial_speed_mps = m.number_in("initial_speed_mps", 0.0, -100, 100);
   c.parallel = m.boolean("parallel", false);
-  for (auto& u : m.tables("unit")) {
+  for (auto& u : m.tables("unit", model::kMaxUnits)) {
     c.unit_files.push_back(u.existing_path("vehicle"));
     c.units.push_back(load_vehicle_file(c.unit_files.back()));
     c.units.back().road = road;
@@ -24,7 +24,7 @@ CombinationModelSettings read_combination_model(StrictTable& m) {
     throw m.error("unit",
                   "needs 2 to " + std::to_string(model::kMaxUnits) + " [[model.unit]] tables");
   }
-  auto joints = m.tables("joint");
+  auto joints = m.tables("joint", model::kMaxJoints);
   if (joints.size() != c.units.size() - 1)
     throw m.error("joint", "needs one [[model.joint]] between each pair of units");
   for (std::size_t i = 0; i < joints.size(); ++i) {

@@ -3,15 +3,14 @@
 #include <algorithm>
 #include <sstream>
 
+#include "io/config/input_file.h"
+
 namespace rig::io::config {
 
 toml::table load_toml_file(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) {
-    throw ConfigError(file.string() + ":1: cannot read file (missing or not a regular file)");
-  }
+  const std::string text = read_input_file(file);  // a regular file of bounded size
   try {
-    return toml::parse_file(file.string());
+    return toml::parse(text, file.string());
   } catch (const toml::parse_error& e) {
     std::ostringstream msg;
     msg << file.string() << ":" << e.source().begin.line << ": " << e.description();
@@ -121,10 +120,19 @@ std::filesystem::path StrictTable::existing_path(std::string_view key) {
   return p;
 }
 
-std::vector<double> StrictTable::numbers(std::string_view key) {
+void StrictTable::check_length(std::string_view key, const toml::array& array,
+                               std::size_t max_entries) const {
+  if (array.size() > max_entries) {
+    throw error(key,
+                std::to_string(array.size()) + " entries, at most " + std::to_string(max_entries));
+  }
+}
+
+std::vector<double> StrictTable::numbers(std::string_view key, std::size_t max_entries) {
   const toml::node& node = require(key);
   const toml::array* arr = node.as_array();
   if (arr == nullptr) throw error(key, "expected an array of numbers");
+  check_length(key, *arr, max_entries);
   std::vector<double> out;
   out.reserve(arr->size());
   for (const toml::node& element : *arr) {
@@ -139,12 +147,13 @@ std::vector<double> StrictTable::numbers(std::string_view key) {
   return out;
 }
 
-std::vector<std::vector<double>> StrictTable::number_rows(std::string_view key,
-                                                          std::size_t columns) {
+std::vector<std::vector<double>> StrictTable::number_rows(std::string_view key, std::size_t columns,
+                                                          std::size_t max_entries) {
   const toml::node& node = require(key);
   const toml::array* arr = node.as_array();
   const std::string expected = "expected an array of [" + std::to_string(columns) + " numbers]";
   if (arr == nullptr) throw error(key, expected);
+  check_length(key, *arr, max_entries);
   std::vector<std::vector<double>> out;
   for (const toml::node& row : *arr) {
     const toml::array* r = row.as_array();
@@ -163,10 +172,11 @@ std::vector<std::vector<double>> StrictTable::number_rows(std::string_view key,
   return out;
 }
 
-std::vector<StrictTable> StrictTable::tables(std::string_view key) {
+std::vector<StrictTable> StrictTable::tables(std::string_view key, std::size_t max_entries) {
   const toml::node& node = require(key);
   const toml::array* arr = node.as_array();
   if (arr == nullptr) throw error(key, "expected an array of tables");
+  check_length(key, *arr, max_entries);
   std::vector<StrictTable> out;
   std::size_t i = 0;
   for (const toml::node& element : *arr) {

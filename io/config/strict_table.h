@@ -18,6 +18,10 @@ namespace rig::io::config {
 /// Parses a TOML file. Throws ConfigError("file:line: ...") if it is missing or malformed.
 toml::table load_toml_file(const std::filesystem::path& file);
 
+/// The most entries any list of a configuration may have (each list has its own, smaller bound
+/// where the rig has one: checksum bytes, axles, units, ...): a list is never unbounded.
+inline constexpr std::size_t kMaxListEntries = 1'000'000;
+
 /// A view of one TOML table that remembers which keys were read, so that finish() can reject
 /// unknown ones. Numbers accept integers and floats alike.
 class StrictTable {
@@ -42,12 +46,18 @@ class StrictTable {
                                    const std::vector<std::string_view>& allowed);
   /// A path string, resolved relative to the directory of this file. Must exist.
   [[nodiscard]] std::filesystem::path existing_path(std::string_view key);
-  [[nodiscard]] std::vector<double> numbers(std::string_view key);
+  /// The list readers: more than `max_entries` entries is an error at the key (file:line),
+  /// found before any entry is read.
+  [[nodiscard]] std::vector<double> numbers(std::string_view key,
+                                            std::size_t max_entries = kMaxListEntries);
   /// An array of rows of `columns` numbers each, e.g. [[x, y, z], ...].
-  [[nodiscard]] std::vector<std::vector<double>> number_rows(std::string_view key,
-                                                             std::size_t columns);
+  [[nodiscard]] std::vector<std::vector<double>> number_rows(
+      std::string_view key, std::size_t columns, std::size_t max_entries = kMaxListEntries);
   /// Array of tables, e.g. [[axle]].
-  [[nodiscard]] std::vector<StrictTable> tables(std::string_view key);
+  [[nodiscard]] std::vector<StrictTable> tables(std::string_view key,
+                                                std::size_t max_entries = kMaxListEntries);
+  /// Throws if the array at `key` has more than `max_entries` entries.
+  void check_length(std::string_view key, const toml::array& array, std::size_t max_entries) const;
 
   [[nodiscard]] StrictTable table(std::string_view key);
   [[nodiscard]] std::optional<StrictTable> optional_table(std::string_view key);

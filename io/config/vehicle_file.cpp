@@ -11,6 +11,10 @@
 namespace rig::io::config {
 namespace {
 
+/// Bounds of the vehicle file's lists (io/config/strict_table.h: every list is bounded).
+constexpr std::size_t kMaxCurvePoints = 1000;  ///< full-load curve
+constexpr std::size_t kMaxGears = 32;
+
 using model::tire::TmeasyCurve;
 using model::vehicle::AxleParams;
 using model::vehicle::TireParams;
@@ -165,8 +169,8 @@ std::optional<double> read_steering(StrictTable t, model::vehicle::SteeringParam
 }
 
 void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
-  d.full_load_speed_radps = t.numbers("full_load_speed_radps");
-  d.full_load_torque_nm = t.numbers("full_load_torque_nm");
+  d.full_load_speed_radps = t.numbers("full_load_speed_radps", kMaxCurvePoints);
+  d.full_load_torque_nm = t.numbers("full_load_torque_nm", kMaxCurvePoints);
   if (d.full_load_speed_radps.size() < 2 ||
       d.full_load_speed_radps.size() != d.full_load_torque_nm.size()) {
     throw t.error("full_load_torque_nm", "needs as many entries as full_load_speed_radps (>= 2)");
@@ -196,7 +200,7 @@ void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
       t.number_in("lockup_speed_ratio_full", d.lockup_speed_ratio_full, 0, 1);
   if (d.lockup_speed_ratio_full <= d.lockup_speed_ratio_start)
     throw t.error("lockup_speed_ratio_full", "must exceed lockup_speed_ratio_start");
-  d.gear_ratios = t.numbers("gear_ratios");
+  d.gear_ratios = t.numbers("gear_ratios", kMaxGears);
   if (d.gear_ratios.empty()) throw t.error("gear_ratios", "needs at least one gear");
   d.reverse_ratio = t.number_in("reverse_ratio", 0.1, 50);
   d.final_drive_ratio = t.number_in("final_drive_ratio", 0.1, 50);
@@ -219,7 +223,7 @@ void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
 /// [chassis] body_points_m = [[x, y, z], ...]: body axes from the CG (vehicle_faults.h).
 std::vector<std::array<double, 3>> read_body_points(StrictTable& c) {
   std::vector<std::array<double, 3>> points;
-  for (const auto& row : c.number_rows("body_points_m", 3)) {
+  for (const auto& row : c.number_rows("body_points_m", 3, model::vehicle::kMaxBodyPoints)) {
     for (const double v : row) {
       if (!std::isfinite(v) || std::abs(v) > 100)
         throw c.error("body_points_m", "coordinates must be finite, within +-100 m");
@@ -262,7 +266,7 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file) {
     tt.finish();
   }
   std::vector<bool> caster_given;
-  for (auto& a : t.tables("axle")) {
+  for (auto& a : t.tables("axle", model::kMaxWheelsPerUnit / 2)) {
     caster_given.push_back(a.has("caster_trail_m"));
     p.axles.push_back(read_axle(std::move(a), tires));
   }

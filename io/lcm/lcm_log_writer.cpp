@@ -2,24 +2,51 @@
 
 #include <lcm/eventlog.h>
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <utility>
 
+#include "io/log/output_file.h"
+
 namespace rig::io::lcm {
 
-LcmLogWriter::LcmLogWriter(const std::string& path, LcmSettings settings)
+LcmLogWriter::LcmLogWriter(const std::string& path, LcmSettings settings, int keep)
     : encoder_(std::move(settings)), path_(path) {
-  errno = 0;
-  log_ = lcm_eventlog_create(path.c_str(), "w");
+  const int fd = log::open_output_file({"--lcm-log", path}, keep);
+  // lcm_eventlog_create would fopen (follow a link, truncate): build its public struct around
+  // our descriptor instead; lcm_eventlog_destroy fcloses and frees it as its own.
+  std::FILE* f = ::fdopen(fd, "wb");
+  log_ =
+      f != nullptr ? static_cast<lcm_eventlog_t*>(std::calloc(1, sizeof(lcm_eventlog_t))) : nullptr;
   if (log_ == nullptr) {
-    throw std::runtime_error("cannot write LCM log " + path + ": " +
-                             (errno != 0 ? std::strerror(errno) : "lcm_eventlog_create failed"));
+    const int error = errno;
+    if (f != nullptr)
+      std::fclose(f);
+    else
+      ::close(fd);
+    throw log::OutputFileError("--lcm-log " + path + ": " + std::strerror(error));
   }
+  log_->f = f;
+}
+
+void LcmLogWriter::failed(int error) {
+  if (write_failures_++ == 0) {
+    write_error_ = error != 0 ? std::strerror(error) : "write failed";
+    std::fprintf(stderr, "rig: writing LCM log %s failed (%s); the log is incomplete\n",
+                 path_.c_str(), write_error_.c_str());
+  }
+}
+
+WriteFailures LcmLogWriter::write_failures() const {
+  if (write_failures_ == 0) return {};
+  return {write_failures_, "LCM log " + path_ + ": " + write_error_};
 }
 
 LcmLogWriter::~LcmLogWriter() {
@@ -46,12 +73,9 @@ void LcmLogWriter::consume(const Snapshot& snapshot, std::uint64_t dropped_befor
     event.datalen = static_cast<std::int32_t>(m.size);
     event.channel = const_cast<char*>(m.channel->c_str());
     event.data = const_cast<std::uint8_t*>(m.data);
+    errno = 0;
     if (lcm_eventlog_write_event(log_, &event) != 0) {
-      if (!write_failed_) {
-        std::fprintf(stderr, "rig: writing LCM log %s failed (%s); the log is incomplete\n",
-                     path_.c_str(), std::strerror(errno));
-        write_failed_ = true;
-      }
+      failed(errno);
       continue;
     }
     ++events_written_;
@@ -59,10 +83,14 @@ void LcmLogWriter::consume(const Snapshot& snapshot, std::uint64_t dropped_befor
 }
 
 void LcmLogWriter::stop() {
-  if (log_ != nullptr) {
-    lcm_eventlog_destroy(log_);  // flushes and closes
-    log_ = nullptr;
-  }
+  if (log_ == nullptr) return;
+  // What is still buffered can fail too (a full disk shows at the flush): count it.
+  errno = 0;
+  if (std::fflush(log_->f) != 0 || std::ferror(log_->f) != 0) failed(errno);
+  errno = 0;
+  if (std::fclose(log_->f) != 0) failed(errno);
+  std::free(log_);  // what lcm_eventlog_destroy does after fclose
+  log_ = nullptr;
 }
 
 }  // namespace rig::io::lcm

@@ -17,13 +17,16 @@ namespace rig::io::lcm {
 /// so that lcm-logplayer replays the run at its simulated pace even if it ran offline.
 class LcmLogWriter final : public SnapshotSink {
  public:
-  /// Opens (truncates) `path`; throws std::runtime_error if it cannot.
-  LcmLogWriter(const std::string& path, LcmSettings settings);
+  /// Creates `path` (io/log/output_file.h: an earlier file is kept as NAME.1 .. NAME.keep, a
+  /// symbolic link refused); throws io::log::OutputFileError if it cannot.
+  LcmLogWriter(const std::string& path, LcmSettings settings, int keep = 10);
   ~LcmLogWriter() override;
 
   void start(const RunInfo& info) override;
   void consume(const Snapshot& snapshot, std::uint64_t dropped_before) override;
   void stop() override;
+  /// Events that could not be written (a full disk), counted until stop().
+  [[nodiscard]] WriteFailures write_failures() const override;
 
   [[nodiscard]] std::uint64_t events_written() const { return events_written_; }
 
@@ -33,7 +36,10 @@ class LcmLogWriter final : public SnapshotSink {
   lcm_eventlog_t* log_ = nullptr;
   std::int64_t start_utime_us_ = 0;
   std::uint64_t events_written_ = 0;
-  bool write_failed_ = false;
+  std::uint64_t write_failures_ = 0;
+  std::string write_error_;  ///< the first failure's errno text
+
+  void failed(int error);
 };
 
 }  // namespace rig::io::lcm

@@ -10,8 +10,8 @@ std::unique_ptr<SnapshotSink> make_lcm_publisher(const LcmSettings& settings) {
 }
 
 std::unique_ptr<SnapshotSink> make_lcm_log_writer(const std::string& path,
-                                                  const LcmSettings& settings) {
-  return std::make_unique<LcmLogWriter>(path, settings);
+                                                  const LcmSettings& settings, int keep) {
+  return std::make_unique<LcmLogWriter>(path, settings, keep);
 }
 
 }  // namespace rig::io::lcm

@@ -14,9 +14,9 @@ namespace rig::io::lcm {
 /// turns itself off at start().
 std::unique_ptr<SnapshotSink> make_lcm_publisher(const LcmSettings& settings);
 
-/// An LCM event log file writer (`--lcm-log FILE`). Throws std::runtime_error if FILE cannot be
-/// opened for writing.
+/// An LCM event log file writer (`--lcm-log FILE`; an earlier FILE kept as FILE.1 .. FILE.keep).
+/// Throws io::log::OutputFileError if FILE cannot be created.
 std::unique_ptr<SnapshotSink> make_lcm_log_writer(const std::string& path,
-                                                  const LcmSettings& settings);
+                                                  const LcmSettings& settings, int keep = 10);
 
 }  // namespace rig::io::lcm

@@ -1,41 +1,60 @@
 #include "io/log/log_file.h"
 
+#include <sys/types.h>
+#include <unistd.h>
+
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
-#include <stdexcept>
+
+#include "io/log/output_file.h"
 
 namespace rig::io::log {
 
-LogFile::LogFile(const std::string& path) {
+LogFile::LogFile(const std::string& path, int keep) : path_(path) {
   if (path.empty()) return;
-  file_ = std::fopen(path.c_str(), "w");
-  if (file_ == nullptr)
-    throw std::runtime_error("cannot open overrun log '" + path + "': " + std::strerror(errno));
+  fd_ = open_output_file({"--overrun-log", path}, keep);
 }
 
 LogFile::~LogFile() { close(); }
 
-void LogFile::write(const LogRecord& record) {
-  if (file_ == nullptr) return;
-  const std::string line = format_record(record);
-  std::fputs(line.c_str(), file_);
-  std::fputc('\n', file_);
+void LogFile::write_line(std::string_view line) {
+  if (fd_ < 0) return;
+  std::size_t done = 0;
+  while (done < line.size()) {
+    const ssize_t n = ::write(fd_, line.data() + done, line.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (write_error_.empty()) write_error_ = n < 0 ? std::strerror(errno) : "short write";
+      ++write_failures_;
+      // Cut the partial line off again: the file ends after its last whole line.
+      if (done > 0 && ::ftruncate(fd_, static_cast<off_t>(good_bytes_)) == 0)
+        (void)::lseek(fd_, static_cast<off_t>(good_bytes_), SEEK_SET);
+      return;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  good_bytes_ += line.size();
 }
+
+void LogFile::write(const LogRecord& record) { write_line(format_record(record) + "\n"); }
 
 void LogFile::write_lost(std::uint64_t lost) {
-  if (file_ == nullptr) return;
-  std::fprintf(file_, "{\"event\":\"ring_overflow\",\"lost\":%llu}\n",
-               static_cast<unsigned long long>(lost));
+  char line[96];
+  std::snprintf(line, sizeof line, "{\"event\":\"ring_overflow\",\"lost\":%llu}\n",
+                static_cast<unsigned long long>(lost));
+  write_line(line);
 }
 
-void LogFile::flush() {
-  if (file_ != nullptr) std::fflush(file_);
-}
+void LogFile::flush() {}  // every line is written at once (no user-space buffer)
 
 void LogFile::close() {
-  if (file_ == nullptr) return;
-  std::fclose(file_);
-  file_ = nullptr;
+  if (fd_ < 0) return;
+  if (::close(fd_) != 0 && errno != EINTR && write_error_.empty()) {
+    write_error_ = std::strerror(errno);
+    ++write_failures_;
+  }
+  fd_ = -1;
 }
 
 }  // namespace rig::io::log

@@ -1,7 +1,13 @@
 #pragma once
 /// @file
-/// systemd integration (sd_notify): READY=1, STATUS=, WATCHDOG=1 only while the loop makes
-/// progress, STOPPING=1. Without NOTIFY_SOCKET every call is a no-op. Non-RT thread only.
+/// systemd integration (the sd_notify protocol): READY=1, STATUS=, WATCHDOG=1 only while the
+/// loop makes progress, STOPPING=1. Without NOTIFY_SOCKET every call is a no-op. Non-RT thread
+/// only.
+///
+/// The socket is non-blocking: a notify socket that is not read (its queue full: 10 datagrams by
+/// default, net.unix.max_dgram_qlen) never holds the rig. STATUS= and WATCHDOG=1 wait at most
+/// kWait_ns for room (none while the socket has been found full), READY=1 and STOPPING=1 at
+/// most kFinalWait_ns; what does not fit is dropped and counted (dropped()).
 
 #include <cstdint>
 #include <string>
@@ -10,8 +16,16 @@ namespace rig::io::systemd {
 
 class SystemdNotifier {
  public:
-  /// Reads NOTIFY_SOCKET and WATCHDOG_USEC (sd_watchdog_enabled).
+  /// The longest STATUS= or WATCHDOG=1 waits for a full notify socket (a slow reader).
+  static constexpr std::int64_t kWait_ns = 20'000'000;
+  /// The longest READY=1 or STOPPING=1 waits.
+  static constexpr std::int64_t kFinalWait_ns = 500'000'000;
+
+  /// Reads NOTIFY_SOCKET (a path or "@abstract") and WATCHDOG_USEC (sd_watchdog_enabled).
   SystemdNotifier();
+  ~SystemdNotifier();
+  SystemdNotifier(const SystemdNotifier&) = delete;
+  SystemdNotifier& operator=(const SystemdNotifier&) = delete;
 
   void ready();
   void status(const std::string& text);
@@ -28,8 +42,19 @@ class SystemdNotifier {
   bool maybe_ping(std::uint64_t loop_cycles, std::int64_t now_ns);
   /// Pings withheld so far because the loop had not advanced.
   [[nodiscard]] std::uint64_t withheld() const noexcept { return withheld_; }
+  /// Messages that did not fit into a full notify socket (or whose send failed).
+  [[nodiscard]] std::uint64_t dropped() const noexcept { return dropped_; }
+  /// NOTIFY_SOCKET as given ("" if none).
+  [[nodiscard]] const std::string& socket_name() const noexcept { return socket_name_; }
 
  private:
+  /// Sends one datagram; on a full socket waits up to `wait_ns` (0: drops it at once).
+  void send(const std::string& message, std::int64_t wait_ns);
+
+  int fd_ = -1;
+  std::string socket_name_;
+  std::uint64_t dropped_ = 0;
+  bool full_ = false;  ///< the last send found the socket full: STATUS/WATCHDOG do not wait
   std::int64_t watchdog_ns_ = 0;
   std::int64_t last_ping_ns_ = 0;
   std::uint64_t last_cycles_ = 0;

@@ -38,6 +38,7 @@ TableDriverParams read_table_driver(io::config::StrictTable& t) {
   const toml::array* rows = raw["rows"].as_array();
   if (rows == nullptr || rows->empty())
     throw t.error("rows", "'rows' must be a non-empty array of arrays");
+  t.check_length("rows", *rows, io::config::kMaxListEntries);
   for (const auto& row_node : *rows) {
     const auto* row = row_node.as_array();
     if (row == nullptr || row->size() != names.size())

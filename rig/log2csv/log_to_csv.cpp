@@ -8,6 +8,7 @@
 #include <fstream>
 #include <memory>
 #include <stdexcept>
+#include <system_error>
 
 #include "rig/log2csv/channel_csv.h"
 
@@ -30,6 +31,30 @@ struct EventlogCloser {
 struct EventCloser {
   void operator()(lcm_eventlog_event_t* event) const { lcm_eventlog_free_event(event); }
 };
+
+/// Header + body into the CSV, every write checked (a full disk shows at a flush or the close).
+void join_csv(ChannelOutput& out) {
+  const std::filesystem::path body_path = out.path.string() + ".body";
+  errno = 0;
+  out.body.close();
+  const bool body_ok = !out.body.fail();
+  const auto failed = [&](const std::string& what) {
+    const std::string why = errno != 0 ? std::strerror(errno) : "write failed";
+    std::error_code ec;
+    std::filesystem::remove(body_path, ec);
+    return WriteError("writing " + what + " failed (" + why + "): the CSV is incomplete");
+  };
+  if (!body_ok) throw failed(body_path.string());
+  std::ofstream csv(out.path, std::ios::binary | std::ios::trunc);
+  std::ifstream body(body_path, std::ios::binary);
+  if (!csv) throw failed(out.path.string());
+  csv << out.decoder->header() << '\n';
+  if (out.summary.rows > 0) csv << body.rdbuf();
+  errno = 0;
+  csv.close();
+  if (csv.fail()) throw failed(out.path.string());
+  std::filesystem::remove(body_path);
+}
 
 }  // namespace
 
@@ -74,7 +99,7 @@ ConversionSummary convert_lcm_log(const std::filesystem::path& log_file,
       out.summary.file = out.path.string();
       out.summary.type_name = out.decoder->type_name();
       out.body.open(out.path.string() + ".body", std::ios::binary | std::ios::trunc);
-      if (!out.body) throw std::runtime_error("cannot write " + out.path.string() + ".body");
+      if (!out.body) throw WriteError("cannot write " + out.path.string() + ".body");
     }
     line.reset();
     if (!out.decoder->row(event, line)) {
@@ -86,17 +111,7 @@ ConversionSummary convert_lcm_log(const std::filesystem::path& log_file,
   }
 
   for (auto& [channel, out] : outputs) {
-    out.body.close();
-    const std::filesystem::path body_path = out.path.string() + ".body";
-    {
-      std::ofstream csv(out.path, std::ios::binary | std::ios::trunc);
-      std::ifstream body(body_path, std::ios::binary);
-      if (!csv) throw std::runtime_error("cannot write " + out.path.string());
-      csv << out.decoder->header() << '\n';
-      if (out.summary.rows > 0) csv << body.rdbuf();
-      if (!csv) throw std::runtime_error("writing " + out.path.string() + " failed");
-    }
-    std::filesystem::remove(body_path);
+    join_csv(out);
     summary.channels.emplace(channel, out.summary);
   }
   return summary;

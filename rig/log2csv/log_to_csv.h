@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <stdexcept>
 #include <string>
 
 namespace rig::log2csv {
@@ -25,7 +26,14 @@ struct ConversionSummary {
 /// The file name for a channel: characters other than letters, digits, '_', '-', '.' become '_'.
 std::string csv_file_name(const std::string& channel);
 
-/// Throws std::runtime_error if the log cannot be read or a CSV cannot be written.
+/// A CSV could not be written completely (a full disk, an I/O error): rig-log2csv exits 3.
+class WriteError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Throws std::runtime_error if the log cannot be read, WriteError if a CSV cannot be written
+/// completely (every write is checked, including the last flush; the temporary files removed).
 ConversionSummary convert_lcm_log(const std::filesystem::path& log_file,
                                   const std::filesystem::path& out_dir);
 

@@ -1,7 +1,8 @@
 /// @file
 /// rig-log2csv LOG OUTDIR: one CSV per channel of an LCM log file. The rig's types are decoded
 /// into named columns (arrays flattened: wheel0_spin_radps, unit1_x_m, input_valid_<name>);
-/// channels of any other type get the columns timestamp_us,channel,size_bytes.
+/// channels of any other type get the columns timestamp_us,channel,size_bytes. Exit status: 0,
+/// 2 usage, 1 an unreadable log, 3 a CSV that could not be written completely (a full disk).
 
 #include <cstdio>
 #include <exception>
@@ -28,6 +29,9 @@ int main(int argc, char** argv) {
     }
     if (summary.events == 0) std::fprintf(stderr, "rig-log2csv: %s holds no events\n", argv[1]);
     return 0;
+  } catch (const rig::log2csv::WriteError& e) {
+    std::fprintf(stderr, "rig-log2csv: error: %s\n", e.what());
+    return 3;  // as the rig: an output lost data
   } catch (const std::exception& e) {
     std::fprintf(stderr, "rig-log2csv: %s\n", e.what());
     return 1;

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <regex>
 #include <string>
@@ -16,6 +17,7 @@
 #include "rig/event_log.h"
 #include "rig/executive.h"
 #include "rig/model_factory.h"
+#include "rig/summary.h"
 #include "tests/rig/fake_clock.h"
 #include "tests/rig/test_model.h"
 #include "tests/support/alloc_counter.h"
@@ -216,6 +218,27 @@ TEST(Executive, StopsCleanlyOnNonFiniteModel) {
   std::filesystem::remove(log_path);
 }
 
+// After a NaN stop the summary is still strict JSON: every non-finite number is null.
+TEST(Summary, NonFiniteNumbersAreNull) {
+  ExecutiveParams p;
+  p.duration_s = 1.0;
+  Harness hx(p);
+  hx.model.nan_at_step = 42;
+  EXPECT_EQ(hx.exec.run_loop(), StopReason::kNonFinite);
+  SummaryExtras extras;
+  extras.wall_time_s = std::numeric_limits<double>::quiet_NaN();
+  extras.write_failures.push_back({3, "LCM log \"x\".lcm: No space left on device"});
+  const std::string json = summary_json(hx.exec, extras);
+  EXPECT_NE(json.find("\"vehicle_speed_mps\": null"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"wall_time_s\": null"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"write_failures\": [{\"output\": \"LCM log \\\"x\\\".lcm: No space left "
+                      "on device\", \"count\": 3}]"),
+            std::string::npos)
+      << json;
+  EXPECT_EQ(json.find("inf"), std::string::npos) << json;
+  EXPECT_EQ(json.find("nan"), std::string::npos) << json;
+}
+
 TEST(Executive, RequestStopEndsTheLoop) {
   ExecutiveParams p;  // duration 0: forever
   Harness hx(p);
@@ -273,6 +296,14 @@ TEST(Config, BadInputGivesFileLine) {
       {"[rig]\nperiod_s = 0.001\nbogus = 1\n", "unknown key 'bogus'", 3},
       {"[rig]\n\nperiod_s = 0.0\n", "must be > 0", 3},
       {"[rig]\nperiod_s = 2.0\n", "must be > 0", 2},
+      // issue 13: a period that rounds to 0 ns divided by zero; the loop counts whole ns
+      {"[rig]\nperiod_s = 1e-10\n", "value 1e-10 out of range: must be > 0, within [1e-05, 1] s",
+       2},
+      {"[rig]\nstep_s = 0.0010000005\n", "0.0010000005 s is not a whole number of nanoseconds", 2},
+      {"[rig]\nperiod_s = 0.001\nduration_s = 0.0004\n",
+       "0.0004 s is shorter than one period (0.001 s); 0 runs until stopped", 3},
+      {"[rig]\nduration_s = nan\n", "value nan out of range", 2},
+      {"[rig]\nkeep_logs = 1001\n", "keep_logs: must be an integer in [0, 1000]", 2},
       {"[rig]\noverrun_policy = \"sometimes\"\n", "unknown value 'sometimes'", 2},
       {"[rig]\n[rigg]\nx = 1\n", "unknown key 'rigg'", 2},
       {"[routing]\nthrottle_pedal = \"ecu\"\n", "unknown value 'ecu'", 2},

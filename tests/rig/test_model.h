@@ -21,8 +21,10 @@ class OscillatorModel final : public model::SteppedModel {
   model::StepStatus step(model::Signals& s) noexcept override {
     if (on_step) on_step(steps_);
     const double u = s[model::Signal::kThrottlePedal];
-    if (nan_at_step >= 0 && steps_ == static_cast<std::uint64_t>(nan_at_step))
-      return model::StepStatus::kNonFinite;
+    if (nan_at_step >= 0 && steps_ == static_cast<std::uint64_t>(nan_at_step)) {
+      s.set(model::Signal::kVehicleSpeed, -std::numeric_limits<double>::infinity());
+      return model::StepStatus::kNonFinite;  // with a non-finite output, as a model would
+    }
     if (fault_at_step >= 0 && steps_ >= static_cast<std::uint64_t>(fault_at_step)) {
       fault_ = {model::FaultKind::kRoll, 1, -1, time_s() + h_, 1.25, 1.0};
       return model::StepStatus::kVehicleFault;  // the state stays (x, v at the last good step)

@@ -2,13 +2,13 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <tuple>
 #include <unordered_map>
 #include <utility>
+
+#include "io/config/input_file.h"
 
 namespace rig::io::can::dbc {
 namespace {
@@ -672,11 +672,7 @@ Database parse_dbc(std::string_view text, std::string_view file_name) {
 }
 
 Database load_dbc(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw config::ConfigError(file.string() + ":1: cannot read DBC file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return parse_dbc(buffer.str(), file.string());
+  return parse_dbc(config::read_input_file(file), file.string());
 }
 
 }  // namespace rig::io::can::dbc

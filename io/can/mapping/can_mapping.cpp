@@ -69,14 +69,17 @@ ChecksumSpec parse_checksum(config::StrictTable t, const dbc::MessageDef& m) {
   std::uint8_t own[64] = {};
   codec.insert_raw(0xFF, own);
   if (t.has("bytes")) {
-    for (double b : t.numbers("bytes")) {
+    // At most one entry per byte of the message: the covered bytes are gathered on the stack.
+    bool listed[64] = {};
+    for (double b : t.numbers("bytes", m.length_bytes)) {
       if (b < 0 || b >= m.length_bytes || b != std::floor(b)) {
         throw t.error("bytes", "byte index " + std::to_string(b) + " is outside message " + m.name +
                                    " (" + std::to_string(m.length_bytes) + " bytes)");
       }
-      if (own[static_cast<std::size_t>(b)] != 0) {
-        throw t.error("bytes", "covered bytes include the checksum itself");
-      }
+      const auto i = static_cast<std::size_t>(b);
+      if (own[i] != 0) throw t.error("bytes", "covered bytes include the checksum itself");
+      if (listed[i]) throw t.error("bytes", "byte " + std::to_string(i) + " listed twice");
+      listed[i] = true;
       c.bytes.push_back(static_cast<std::uint8_t>(b));
     }
   } else {
@@ -122,7 +125,7 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
     b.period_ns = static_cast<std::int64_t>(m.cycle_time_ms) * 1'000'000;
   }
   std::vector<config::StrictTable> signal_tables;
-  if (t.has("signal")) signal_tables = t.tables("signal");
+  if (t.has("signal")) signal_tables = t.tables("signal", m.signals.size());
   for (config::StrictTable& st : signal_tables) {
     SignalBinding sb;
     sb.dbc_signal = signal_index(st, "dbc", m);
@@ -165,11 +168,11 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
 CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& database) {
   CanMapping mapping;
   if (table.has("rx")) {
-    for (config::StrictTable& t : table.tables("rx"))
+    for (config::StrictTable& t : table.tables("rx", database.messages.size()))
       mapping.rx.push_back(parse_message(t, database, true));
   }
   if (table.has("tx")) {
-    for (config::StrictTable& t : table.tables("tx"))
+    for (config::StrictTable& t : table.tables("tx", database.messages.size()))
       mapping.tx.push_back(parse_message(t, database, false));
   }
   // One message per direction at most; a model input bound once.

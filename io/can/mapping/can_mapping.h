@@ -38,6 +38,7 @@
 /// "rpm_to_radps", "percent_to_ratio". TX uses the inverse: dbc = (model - offset) / scale.
 /// Unmapped TX signals are sent at their GenSigStartValue. Checksum `bytes` default to every
 /// byte of the message except those of the checksum signal; the checksum signal must be 8 bits.
+/// Given, each byte at most once (so at most the message's length, 64 at most for CAN FD).
 /// The alive counter must advance by 1..max_step (mod modulus) per frame; a frozen or jumping
 /// counter is a failure. Every name is checked against the DBC and model/signals.h, and every
 /// error is config::ConfigError("file:line: ...").

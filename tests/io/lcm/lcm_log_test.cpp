@@ -103,6 +103,35 @@ TEST(LcmLogWriter, UnwritablePathThrows) {
   EXPECT_THROW(lcm::LcmLogWriter("/nonexistent-dir/x.lcm", lcm::LcmSettings{}), std::runtime_error);
 }
 
+// /dev/full fails every write with ENOSPC (a full disk): nothing is written, every event that
+// did not reach the file is counted (also those only flushed at stop()), none silently.
+TEST(LcmLogWriter, WriteFailuresOnAFullDiskAreCounted) {
+  lcm::LcmLogWriter writer("/dev/full", lcm::LcmSettings{});
+  RunInfo info;
+  info.period_s = kPeriod;
+  writer.start(info);
+  for (std::uint64_t c = 0; c < 100; ++c)
+    writer.consume(test::make_synthetic_snapshot(c, kPeriod), 0);
+  writer.stop();
+  const WriteFailures f = writer.write_failures();
+  EXPECT_GT(f.count, 0u);
+  EXPECT_EQ(f.what, "LCM log /dev/full: No space left on device");
+  EXPECT_LT(writer.events_written(), 100u + 10u + 1u);  // not all of them reached the file
+}
+
+TEST(LcmLogWriter, EarlierLogIsKeptAsDotOne) {
+  const auto file = temp_path("rig_lcm_rotate.lcm");
+  std::filesystem::remove(file);
+  std::filesystem::remove(file.string() + ".1");
+  write_log(file, 100);
+  const auto first_size = std::filesystem::file_size(file);
+  write_log(file, 200);
+  EXPECT_EQ(std::filesystem::file_size(file.string() + ".1"), first_size);
+  EXPECT_GT(std::filesystem::file_size(file), first_size);
+  std::filesystem::remove(file);
+  std::filesystem::remove(file.string() + ".1");
+}
+
 TEST(Log2Csv, ReproducesKnownValuesAndFlattensArrays) {
   const auto file = temp_path("rig_lcm_log2csv.lcm");
   const auto dir = temp_path("rig_lcm_log2csv_out");

@@ -87,6 +87,17 @@ TEST_F(CanMappingErrors, UnknownNamesAndBadValuesNameTheLine) {
   EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
                        "checksum = { signal = \"EPS_Checksum\", bytes = [0, 9] }\n"),
               HasSubstr("outside message EPS_Status"));
+  // More covered bytes than the message has (they are gathered into a 64-byte stack buffer):
+  // refused before any is read, as is a byte listed twice.
+  std::string bytes_65 = "[0";
+  for (int i = 1; i < 65; ++i) bytes_65 += ", 0";
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
+                       "checksum = { signal = \"EPS_Checksum\", bytes = " +
+                       bytes_65 + "] }\n"),
+              HasSubstr(":4: [checksum] bytes: 65 entries, at most 8"));
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
+                       "checksum = { signal = \"EPS_Checksum\", bytes = [2, 0, 2] }\n"),
+              HasSubstr(":4: [checksum] bytes: byte 2 listed twice"));
   EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
                        "counter = { signal = \"EPS_Counter\", modulus = 17 }\n"),
               HasSubstr("modulus"));

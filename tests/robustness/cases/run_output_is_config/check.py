@@ -1,0 +1,1 @@
+assert open("config.toml").read() == "[rig]\nperiod_s = 0.001\n"

@@ -1,0 +1,1 @@
+assert open("precious.txt").read() == "keep me\n"

@@ -1,0 +1,13 @@
+import json, os, subprocess, sys
+def run(n, config="config.toml"):
+    r = subprocess.run([os.environ["RIG"], "run", "--config", config, "--offline", "--duration",
+                        str(0.001 * n), "--lcm-url", "none", "--summary-json", "s.json",
+                        "--overrun-log", "events.jsonl", "--lcm-log", "run.lcm"],
+                       capture_output=True, text=True, timeout=20)
+    assert r.returncode == 0, r.stderr
+def cycles(path):
+    return json.load(open(path))["cycles"]
+
+run(1)
+run(2)
+assert cycles("s.json") == 2

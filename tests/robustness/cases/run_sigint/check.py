@@ -1,0 +1,3 @@
+import json
+s = json.load(open("s.json"))
+assert s["stop_reason"] == "signal", s["stop_reason"]
