@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "rig/signals.h"
+
 namespace rig {
 namespace {
 
@@ -21,7 +23,7 @@ void Dispatcher::start_sinks(const io::RunInfo& info) {
 }
 
 void Dispatcher::start() {
-  thread_ = std::thread([this] { thread_main(); });
+  thread_ = start_thread([this] { thread_main(); });
 }
 
 void Dispatcher::join() {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "rig/rt/thread_setup.h"
+#include "rig/signals.h"
 #include "rig/vehicle_fault_text.h"
 
 namespace rig {
@@ -284,7 +285,7 @@ io::RunInfo Executive::prepare(const std::string& config_file) {
     rt_problems_ = locked.message;
   }
   dispatcher_.start_sinks(info_);
-  loop_thread_ = std::thread([this] { loop_thread_main(); });
+  loop_thread_ = start_thread([this] { loop_thread_main(); });
   rt_ready_.wait(false, std::memory_order_acquire);
   dispatcher_.start();
   return info_;

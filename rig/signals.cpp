@@ -31,15 +31,10 @@ void handle(int signo, void (*handler)(int)) {
 }  // namespace
 
 void install_signal_handlers() {
-  sigset_t ours;
-  sigemptyset(&ours);
-  for (const int s : {SIGINT, SIGTERM, SIGHUP}) {
-    handle(s, on_stop_signal);
-    sigaddset(&ours, s);
-  }
+  for (const int s : {SIGINT, SIGTERM, SIGHUP}) handle(s, on_stop_signal);
   handle(SIGUSR1, on_status_signal);
-  sigaddset(&ours, SIGUSR1);
   handle(SIGPIPE, SIG_IGN);
+  const sigset_t ours = rig_signals();
   // A mask inherited blocked (exec keeps it) would hold a stop signal back for the whole run;
   // one already pending is handled now, before anything else.
   sigprocmask(SIG_UNBLOCK, &ours, nullptr);

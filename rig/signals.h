@@ -8,9 +8,48 @@
 /// The handlers only set flags and ask the executive to stop (async-signal-safe). The four are
 /// unblocked if the rig inherited them blocked; one already pending then counts at once.
 
+#include <pthread.h>
+
+#include <csignal>
+#include <thread>
+#include <utility>
+
 namespace rig {
 
 class Executive;
+
+/// The signals the rig handles: INT, TERM, HUP (stop) and USR1 (status line).
+inline sigset_t rig_signals() noexcept {
+  sigset_t set;
+  sigemptyset(&set);
+  for (const int s : {SIGINT, SIGTERM, SIGHUP, SIGUSR1}) sigaddset(&set, s);
+  return set;
+}
+
+/// While alive, the calling thread blocks the rig's signals; a thread started meanwhile inherits
+/// that mask. (Header only: the combination's worker, rig/thread_begin_step_runner.h, uses it.)
+class SignalsBlocked {
+ public:
+  SignalsBlocked() noexcept {
+    const sigset_t set = rig_signals();
+    pthread_sigmask(SIG_BLOCK, &set, &previous_);
+  }
+  ~SignalsBlocked() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+  SignalsBlocked(const SignalsBlocked&) = delete;
+  SignalsBlocked& operator=(const SignalsBlocked&) = delete;
+
+ private:
+  sigset_t previous_{};
+};
+
+/// Every thread of the rig starts here: with the rig's signals blocked, so that their handlers
+/// run on the main thread only - never on the real-time loop (whose sleep a signal would cut
+/// short) or a worker.
+template <class F>
+std::thread start_thread(F&& f) {
+  const SignalsBlocked blocked;
+  return std::thread(std::forward<F>(f));
+}
 
 void install_signal_handlers();
 

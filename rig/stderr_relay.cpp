@@ -10,6 +10,8 @@
 #include <mutex>
 #include <thread>
 
+#include "rig/signals.h"
+
 namespace rig {
 
 struct StderrRelay::Shared {
@@ -57,7 +59,7 @@ StderrRelay::StderrRelay() {
   shared_ = new Shared;
   shared_->read_fd = fds[0];
   shared_->real_stderr = real;
-  std::thread([s = shared_] {
+  start_thread([s = shared_] {
     copy_until_closed(s->read_fd, s->real_stderr);
     const std::lock_guard<std::mutex> lock(s->mutex);
     s->done = true;

@@ -17,6 +17,7 @@
 
 #include "model/combination/begin_step_runner.h"
 #include "model/solver/couplable_system.h"
+#include "rig/signals.h"
 
 namespace rig {
 
@@ -28,7 +29,7 @@ namespace rig {
 class ThreadBeginStepRunner final : public model::combination::BeginStepRunner {
  public:
   explicit ThreadBeginStepRunner(std::vector<model::solver::CouplableSystem*> units)
-      : units_(std::move(units)), worker_([this] { run(); }) {}
+      : units_(std::move(units)), worker_(start_thread([this] { run(); })) {}
   ~ThreadBeginStepRunner() override {
     {
       const std::lock_guard<std::mutex> lock(mutex_);
