@@ -12,6 +12,7 @@ TxScheduler::TxScheduler(const CanConfig& config) {
     Message m{.id = def.id,
               .extended = def.extended,
               .length_bytes = def.length_bytes,
+              .fd = def.is_fd(),
               .codec = dbc::MessageCodec(def),
               .physical = {},
               .bound = b.signals,
@@ -73,7 +74,7 @@ void TxScheduler::encode(std::size_t i, const model::Signals& signals, TxFrame& 
   }
   frame.id = m.id;
   frame.extended = m.extended;
-  frame.fd = m.length_bytes > 8;
+  frame.fd = m.fd;
   frame.len = static_cast<std::uint8_t>(m.length_bytes);
   m.codec.encode(m.physical, frame.data.data());
   for (const SignalBinding& b : m.bound) {  // after a vehicle fault, say: its SNA value

@@ -58,6 +58,7 @@ class TxScheduler {
     std::uint32_t id = 0;
     bool extended = false;
     std::uint32_t length_bytes = 0;
+    bool fd = false;
     dbc::MessageCodec codec;
     std::vector<double> physical;  ///< per DBC signal, start values preset
     std::vector<SignalBinding> bound;

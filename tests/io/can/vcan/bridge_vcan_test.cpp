@@ -348,7 +348,7 @@ TEST(BridgeVcan, GarbageIsCountedAndDownUpIsSurvived) {
   EXPECT_GE(c.bad_frames, 3u);        // 200#0102, 220#01, 200## (FD, 2 bytes): wrong length
   EXPECT_GT(c.unknown_frames, 100u);  // random ids
   EXPECT_EQ(c.error_frames, 1u);
-  EXPECT_EQ(c.bus_state, BusState::kUp);
+  EXPECT_EQ(c.bus_state, BusState::kErrorPassive);  // an error frame (issue 13)
   const auto& t = bridge->transport().counters();
   // Every frame of the flood was either received (and counted by kind) or dropped by the kernel.
   EXPECT_GE(c.frames_received + t.rx_overflows, 5000u + 3u + 1u);
@@ -397,8 +397,8 @@ TEST(BridgeVcan, ReplayedEcuTrafficGivesTheSameResultsTwice) {
     auto drain = [&] {
       transport.drain([&](const can::transport::TransportFrame& f) {
         // Frame k at a nominal 10 ms spacing: results depend on the data, not on arrival time.
-        if (rx.on_frame(f.id, f.extended, f.data.data(), f.len, ++k * 10'000'000, s, c) ==
-            can::mapping::RxResult::kAccepted) {
+        if (rx.on_frame(f.id, f.extended, can::mapping::FrameFormat::kClassic, f.data.data(), f.len,
+                        ++k * 10'000'000, s, c) == can::mapping::RxResult::kAccepted) {
           assist.push_back(s[Signal::kAssistTorque]);
         }
       });

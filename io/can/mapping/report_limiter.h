@@ -1,0 +1,43 @@
+#pragma once
+/// @file
+/// Rate limit of a repeated event (e.g. a signal clamped to its DBC range): the first occurrence
+/// is reported at once, later ones at most once per interval, each report with the number of
+/// occurrences since the previous one, so a flood costs one log line a second and loses no count.
+/// Plain data, allocation-free, noexcept (RT thread).
+
+#include <cstdint>
+
+namespace rig::io::can::mapping {
+
+class ReportLimiter {
+ public:
+  static constexpr std::int64_t kDefaultIntervalNs = 1'000'000'000;
+
+  explicit ReportLimiter(std::int64_t interval_ns = kDefaultIntervalNs) noexcept
+      : interval_ns_(interval_ns) {}
+
+  /// One occurrence.
+  void count() noexcept { ++pending_; }
+
+  /// The number of occurrences to report at `now_ns` (0: none due), and marks them reported.
+  std::uint64_t take_due(std::int64_t now_ns) noexcept {
+    if (pending_ == 0) return 0;
+    if (reported_once_ && now_ns - last_report_ns_ < interval_ns_) return 0;
+    const std::uint64_t n = pending_;
+    pending_ = 0;
+    reported_once_ = true;
+    last_report_ns_ = now_ns;
+    return n;
+  }
+
+  /// Occurrences counted but not reported yet.
+  [[nodiscard]] std::uint64_t pending() const noexcept { return pending_; }
+
+ private:
+  std::int64_t interval_ns_;
+  std::int64_t last_report_ns_ = 0;
+  std::uint64_t pending_ = 0;
+  bool reported_once_ = false;
+};
+
+}  // namespace rig::io::can::mapping
