@@ -1,16 +1,20 @@
 #!/usr/bin/python3
 """The independent CAN peer of the robustness cases that need vcan (issue 13).
 
-Plain AF_CAN raw sockets of the Python standard library (no rig code, no python-can: it starts
-fast in the VM). The EPS_Status frame of config/can/steering-bench.dbc is built by hand here:
+Plain AF_CAN raw sockets of the Python standard library (no rig code, no python-can: one fast
+process in the slow VM). The EPS_Status frame of config/can/steering-bench.dbc is built by hand:
 EPS_MotorTorque 0|16@1- (0.01 Nm), EPS_Counter 48|4, CRC-8 SAE J1850 of bytes 0..6 in byte 7.
 
-  can_peer.py wait-start EVENTS.jsonl [TIMEOUT_S]    # until the rig's "start" event
-  can_peer.py eps IFACE --counters SPEC [--torque NM] [--period-ms MS] [--fd] [--rtr]
-      SPEC: comma-separated counter values, "N*V" repeats V N times, "A+N" counts N values up
-      from A (mod 16), e.g. "0+8,20*7" = a proper sequence 0..7, then 20 frames frozen at 7.
-  can_peer.py error IFACE CLASS [CONTROLLER]         # one error frame: can_id CAN_ERR_FLAG|CLASS
-                                                     # (hex), data[1] = CONTROLLER (hex)
+  can_peer.py IFACE [--wait-start EVENTS.jsonl] [--torque NM] [--period-ms MS] STEP...
+
+Waits for the rig's "start" event in EVENTS.jsonl, then runs the steps in order:
+  classic:SPEC   EPS_Status classic frames, one per period, with the counter values of SPEC:
+                 comma-separated values, "N*V" = V N times, "A+N" = N values counting up from A
+                 (mod 16); e.g. classic:0+8,20*7 = a proper sequence 0..7, then frozen at 7
+  fd:SPEC        the same as CAN FD frames (8 bytes)
+  rtr:N          N remote (RTR) frames on the EPS_Status id
+  error:CLASS[/CTRL]  one error frame: can_id CAN_ERR_FLAG | CLASS, data[1] = CTRL (hex)
+  sleep:S        wait S seconds
 """
 import argparse
 import json
@@ -83,66 +87,63 @@ def send(s, frame):
     raise SystemExit("can_peer: send failed")
 
 
-def cmd_wait_start(args):
-    deadline = time.monotonic() + args.timeout_s
+def wait_start(events, timeout_s=20.0):
+    deadline = time.monotonic() + timeout_s
     while time.monotonic() < deadline:
         try:
-            with open(args.events) as f:
+            with open(events) as f:
                 for line in f:
                     try:
                         if json.loads(line).get("event") == "start":
-                            return 0
+                            return
                     except json.JSONDecodeError:
                         pass
         except FileNotFoundError:
             pass
         time.sleep(0.01)
-    print(f"can_peer: no start event in {args.events}", file=sys.stderr)
-    return 1
+    raise SystemExit(f"can_peer: no start event in {events}")
 
 
-def cmd_eps(args):
-    s = open_socket(args.iface, fd=args.fd)
-    for counter in parse_counters(args.counters):
-        if args.rtr:
-            frame = classic(EPS_STATUS | CAN_RTR_FLAG, b"")
-            frame = frame[:4] + bytes([8]) + frame[5:]  # an RTR asks for 8 bytes
-        elif args.fd:
-            frame = fd_frame(EPS_STATUS, eps_status(args.torque, counter))
-        else:
-            frame = classic(EPS_STATUS, eps_status(args.torque, counter))
-        send(s, frame)
-        time.sleep(args.period_ms / 1000.0)
-    return 0
-
-
-def cmd_error(args):
-    s = open_socket(args.iface)
-    data = bytearray(8)
-    data[1] = int(args.controller, 16)
-    send(s, classic(CAN_ERR_FLAG | int(args.error_class, 16), bytes(data)))
-    return 0
+def run_step(step, args, sockets):
+    kind, _, arg = step.partition(":")
+    period_s = args.period_ms / 1000.0
+    if kind in ("classic", "fd"):
+        s = sockets[kind == "fd"]
+        make = fd_frame if kind == "fd" else classic
+        for counter in parse_counters(arg):
+            send(s, make(EPS_STATUS, eps_status(args.torque, counter)))
+            time.sleep(period_s)
+    elif kind == "rtr":
+        for _ in range(int(arg)):
+            frame = bytearray(classic(EPS_STATUS | CAN_RTR_FLAG, b""))
+            frame[4] = 8  # a remote request asks for 8 bytes
+            send(sockets[False], bytes(frame))
+            time.sleep(period_s)
+    elif kind == "error":
+        error_class, _, controller = arg.partition("/")
+        data = bytearray(8)
+        data[1] = int(controller or "0", 16)
+        send(sockets[False], classic(CAN_ERR_FLAG | int(error_class, 16), bytes(data)))
+    elif kind == "sleep":
+        time.sleep(float(arg))
+    else:
+        raise SystemExit(f"can_peer: unknown step {step!r}")
 
 
 def main():
     p = argparse.ArgumentParser()
-    sub = p.add_subparsers(dest="cmd", required=True)
-    w = sub.add_parser("wait-start")
-    w.add_argument("events")
-    w.add_argument("timeout_s", nargs="?", type=float, default=20.0)
-    e = sub.add_parser("eps")
-    e.add_argument("iface")
-    e.add_argument("--counters", required=True)
-    e.add_argument("--torque", type=float, default=1.0)
-    e.add_argument("--period-ms", type=float, default=10.0)
-    e.add_argument("--fd", action="store_true")
-    e.add_argument("--rtr", action="store_true")
-    r = sub.add_parser("error")
-    r.add_argument("iface")
-    r.add_argument("error_class")
-    r.add_argument("controller", nargs="?", default="0")
+    p.add_argument("iface")
+    p.add_argument("steps", nargs="+")
+    p.add_argument("--wait-start")
+    p.add_argument("--torque", type=float, default=1.0)
+    p.add_argument("--period-ms", type=float, default=10.0)
     args = p.parse_args()
-    return {"wait-start": cmd_wait_start, "eps": cmd_eps, "error": cmd_error}[args.cmd](args)
+    sockets = {False: open_socket(args.iface), True: open_socket(args.iface, fd=True)}
+    if args.wait_start:
+        wait_start(args.wait_start)
+    for step in args.steps:
+        run_step(step, args, sockets)
+    return 0
 
 
 if __name__ == "__main__":

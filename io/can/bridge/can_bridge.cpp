@@ -86,17 +86,18 @@ void CanBridge::watch_bus_state() noexcept {
 }
 
 void CanBridge::report_out_of_range(const can::mapping::OutOfRangeReport& r) noexcept {
-  if (!std::isfinite(r.received)) {
+  const auto count = static_cast<unsigned long long>(r.count);
+  if (!std::isfinite(r.received) && std::strcmp(r.direction, "rx") == 0) {
     push_event("out_of_range",
-               "rx %s.%s: non-finite value %g, previous value kept; %llu since the last report",
-               r.message, r.signal, r.received, static_cast<unsigned long long>(r.count));
+               "rx %s.%s: %g is not finite, previous value kept; %llu since the last report",
+               r.message, r.signal, r.received, count);
     return;
   }
-  const double clamped = r.received < r.minimum ? r.minimum : r.maximum;
+  // As the engines clamp: beyond the maximum to it, everything else (below, NaN) to the minimum.
+  const double clamped = r.received > r.maximum ? r.maximum : r.minimum;
   push_event("out_of_range",
-             "rx %s.%s: %g outside [%g, %g], clamped to %g; %llu since the last report", r.message,
-             r.signal, r.received, r.minimum, r.maximum, clamped,
-             static_cast<unsigned long long>(r.count));
+             "%s %s.%s: %g outside [%g, %g], clamped to %g; %llu since the last report",
+             r.direction, r.message, r.signal, r.received, r.minimum, r.maximum, clamped, count);
 }
 
 void CanBridge::receive(std::int64_t monotonic_ns, model::Signals& inputs) noexcept {
@@ -124,6 +125,8 @@ void CanBridge::transmit(std::int64_t monotonic_ns, const model::Signals& output
   if (!started_) start(monotonic_ns);
   const std::size_t n = tx_.due_frames(
       monotonic_ns, outputs, std::span<can::mapping::TxFrame>(tx_frames_), engine_counters_);
+  tx_.take_out_of_range_reports(
+      monotonic_ns, [this](const can::mapping::OutOfRangeReport& r) { report_out_of_range(r); });
   for (std::size_t i = 0; i < n; ++i) {
     const can::mapping::TxFrame& in = tx_frames_[i];
     can::transport::TransportFrame out;

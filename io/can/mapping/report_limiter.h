@@ -40,4 +40,16 @@ class ReportLimiter {
   bool reported_once_ = false;
 };
 
+/// One rate-limited report of values clamped to a signal's DBC range (or non-finite), from the
+/// RX engine (a received value) or the TX engine (a model value to be sent).
+struct OutOfRangeReport {
+  const char* direction = "rx";  ///< "rx" or "tx"
+  const char* message = "";      ///< DBC message name
+  const char* signal = "";       ///< DBC signal name
+  double received = 0.0;         ///< the last value out of range (physical, DBC units; may be NaN)
+  double minimum = 0.0;          ///< the DBC range it was clamped to
+  double maximum = 0.0;
+  std::uint64_t count = 0;  ///< occurrences since the previous report of this signal
+};
+
 }  // namespace rig::io::can::mapping

@@ -148,8 +148,8 @@ void RxProcessor::check_timeouts(std::int64_t now_ns, model::Signals& signals,
       ++counters.timeouts;
       m.timeout_counted = true;
     }
+    if (!m.timed_out) m.sequence.restart();  // once per timeout: a new sequence, a latch stays
     m.timed_out = true;
-    m.sequence.restart();  // the next frame starts a new sequence; a latch stays
     apply_fallback(m, signals);
   }
 }

@@ -41,16 +41,6 @@ enum class RxResult : std::uint8_t {
   kCounterFailure,   ///< counter repeated, skipped or latched (counter_failures), rejected
 };
 
-/// One rate-limited report of values clamped to a signal's DBC range (or non-finite).
-struct OutOfRangeReport {
-  const char* message = "";  ///< DBC message name
-  const char* signal = "";   ///< DBC signal name
-  double received = 0.0;     ///< the last value out of range (physical, DBC units; may be NaN)
-  double minimum = 0.0;      ///< the DBC range it was clamped to
-  double maximum = 0.0;
-  std::uint64_t count = 0;  ///< occurrences since the previous report of this signal
-};
-
 class RxProcessor {
  public:
   /// Compiles the RX bindings of `config` (load time; keeps a pointer to nothing in config).
@@ -83,7 +73,8 @@ class RxProcessor {
       for (Bound& b : m.bound) {
         const std::uint64_t n = b.reports.take_due(now_ns);
         if (n == 0) continue;
-        visit(OutOfRangeReport{.message = m.name.c_str(),
+        visit(OutOfRangeReport{.direction = "rx",
+                               .message = m.name.c_str(),
                                .signal = b.name.c_str(),
                                .received = b.last_out_of_range,
                                .minimum = b.minimum,

@@ -6,10 +6,12 @@
 /// Each received counter value is compared with the previous one: the step (value - last) mod
 /// modulus must lie in 1..max_delta. A step of 0 (a repeated or frozen counter) or beyond
 /// max_delta (frames skipped, or a jump) latches the checker: every frame is rejected until the
-/// counter has moved properly `good_steps_to_unlatch` times in a row. A frozen sender therefore
-/// stays rejected however long it lasts, also across a message timeout (the latch survives
-/// restart(); only reset() clears it). The checker always resynchronises on the value received,
-/// so a single jump costs the jump and the steps needed to unlatch, nothing more.
+/// counter has moved properly `good_steps_to_unlatch` times in a row. After restart() (the
+/// message came back after a timeout) any step but 0 is taken without complaint, as a sender
+/// may resume anywhere; the same value as before the silence is still a repeat. So a frozen
+/// sender stays rejected however long it lasts and however slowly it sends, and a latch
+/// survives timeouts (only reset() clears it). The checker always resynchronises on the value
+/// received, so a single jump costs the jump and the steps needed to unlatch, nothing more.
 ///
 /// Plain data, allocation-free, noexcept: it runs on the RT thread.
 
@@ -44,12 +46,13 @@ class SequenceChecker {
   /// Checks the next received counter value and resynchronises on it.
   SequenceResult check(std::uint32_t value) noexcept;
 
-  /// A new sequence (e.g. the message came back after a timeout): the next value is taken as it
-  /// is unless the checker is latched, which it stays until the counter moves properly.
-  void restart() noexcept { have_last_ = false; }
+  /// A new sequence (the message timed out; call once per timeout): the next value may jump
+  /// anywhere but must differ from the last one; a latch stays until proper steps end it.
+  void restart() noexcept { resume_ = have_last_; }
   /// Forgets everything, the latch too (start of a run).
   void reset() noexcept {
     have_last_ = false;
+    resume_ = false;
     latched_ = false;
     good_steps_ = 0;
   }
@@ -64,6 +67,7 @@ class SequenceChecker {
   std::uint32_t last_ = 0;
   std::uint32_t good_steps_ = 0;  // proper steps since the latch
   bool have_last_ = false;
+  bool resume_ = false;  // restarted: the next non-zero step is no skip
   bool latched_ = false;
 };
 

@@ -19,6 +19,10 @@ TxScheduler::TxScheduler(const CanConfig& config) {
               .minimum = {},
               .maximum = {},
               .clamp = {},
+              .name = def.name,
+              .names = {},
+              .reports = {},
+              .last_out_of_range = {},
               .mux_pages = {},
               .next_page = 0,
               .counter = b.counter,
@@ -42,6 +46,9 @@ TxScheduler::TxScheduler(const CanConfig& config) {
       m.minimum.push_back(s.minimum);
       m.maximum.push_back(s.maximum);
       m.clamp.push_back(s.has_range());
+      m.names.push_back(s.name);
+      m.reports.emplace_back();
+      m.last_out_of_range.push_back(0.0);
     }
     messages_.push_back(std::move(m));
   }
@@ -61,6 +68,8 @@ void TxScheduler::encode(std::size_t i, const model::Signals& signals, TxFrame& 
     if (b.model) physical = (signals[*b.model] - b.offset) / b.scale;
     if (m.clamp[k] && !(physical >= m.minimum[k] && physical <= m.maximum[k])) {
       // NaN goes to the minimum too: never send an undefined value.
+      m.last_out_of_range[k] = physical;
+      m.reports[k].count();
       physical = physical > m.maximum[k] ? m.maximum[k] : m.minimum[k];
       ++counters.out_of_range;
     }

@@ -43,10 +43,13 @@ TEST(SequenceChecker, RestartWhileLatchedNeedsAProperStep) {
   SequenceChecker c(SequenceParams{.modulus = 16, .max_delta = 1, .good_steps_to_unlatch = 1});
   EXPECT_EQ(feed(c, {3, 3}), (std::vector<R>{R::kOk, R::kRepeated}));
   c.restart();
-  EXPECT_EQ(c.check(3), R::kLatched);  // first value after the restart: no step to judge
-  EXPECT_EQ(c.check(3), R::kRepeated);
-  EXPECT_EQ(c.check(4), R::kOk);
-  c.reset();  // a new run forgets the latch
+  EXPECT_EQ(c.check(3), R::kRepeated);  // still the value from before the silence
+  c.restart();
+  EXPECT_EQ(c.check(9), R::kLatched);  // a jump after a restart is no skip, but no proper step
+  EXPECT_EQ(c.check(10), R::kOk);
+  c.restart();
+  EXPECT_EQ(c.check(2), R::kOk);  // not latched: a sender may resume anywhere after a timeout
+  c.reset();                      // a new run forgets the latch
   EXPECT_EQ(c.check(4), R::kOk);
 }
 
@@ -60,6 +63,24 @@ TEST(SequenceChecker, SkipsBeyondMaxDeltaLatchUntilGoodSteps) {
   EXPECT_EQ(feed(c, {20, 21, 22, 22, 23, 24, 25}),
             (std::vector<R>{R::kRepeated, R::kLatched, R::kLatched, R::kRepeated, R::kLatched,
                             R::kLatched, R::kOk}));
+}
+
+TEST(SequenceChecker, ProperStepsAcrossARestartCountTowardsTheUnlatch) {
+  SequenceChecker c(SequenceParams{.modulus = 16, .max_delta = 1, .good_steps_to_unlatch = 3});
+  EXPECT_EQ(feed(c, {0, 1, 5, 6, 7}),
+            (std::vector<R>{R::kOk, R::kOk, R::kSkipped, R::kLatched, R::kLatched}));
+  c.restart();  // the message timed out while latched (rejected frames do not refresh it)
+  EXPECT_EQ(c.check(8), R::kOk);  // the third proper step
+}
+
+TEST(SequenceChecker, AFrozenCounterSlowerThanTheTimeoutIsStillRepeated) {
+  // Frames further apart than the message timeout: every frame follows a restart.
+  SequenceChecker c(SequenceParams{});
+  EXPECT_EQ(c.check(1), R::kOk);
+  for (int i = 0; i < 50; ++i) {
+    c.restart();
+    ASSERT_EQ(c.check(1), R::kRepeated);
+  }
 }
 
 TEST(SequenceChecker, ValuesBeyondTheModulusAreInvalid) {
