@@ -2,6 +2,7 @@
 /// @file
 /// The interface the executive's loop calls on each I/O adapter (CAN, ...) once per cycle.
 
+#include <array>
 #include <bitset>
 #include <cstdint>
 
@@ -13,6 +14,13 @@ namespace rig::io {
 /// A set of model inputs (bit model::index(signal)), e.g. those an adapter feeds. Decided once
 /// at start (the rig's routing) and handed to each adapter at construction.
 using InputSet = std::bitset<model::kSignalCount>;
+
+/// Something an adapter wants in the event log (a bus state change, a rate-limited report):
+/// plain data, fixed size (the sizes of the log's records, io/log/log_record.h).
+struct IoEvent {
+  std::array<char, 24> name{};     ///< e.g. "can_bus_off"
+  std::array<char, 160> detail{};  ///< free text
+};
 
 /// An adapter that exchanges model signals with the outside once per cycle. Both calls run on
 /// the RT thread: non-blocking, allocation-free, no exceptions. Failures are counted, never fatal.
@@ -30,6 +38,12 @@ class CycleIo {
   virtual void transmit(std::int64_t monotonic_ns, const model::Signals& outputs) noexcept = 0;
   /// Current counters, copied into the cycle's snapshot.
   virtual void read_counters(IoCounters& counters) const noexcept = 0;
+  /// Hands over the oldest pending event (false: none). The loop calls it after receive()
+  /// until it returns false and writes each into the event log.
+  virtual bool next_event(IoEvent& event) noexcept {
+    (void)event;
+    return false;
+  }
 };
 
 }  // namespace rig::io

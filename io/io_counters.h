@@ -6,8 +6,27 @@
 
 namespace rig::io {
 
-/// In order of severity (summing counters keeps the worst).
-enum class BusState : std::uint8_t { kDisabled, kUp, kDown };
+/// In order of severity (summing counters keeps the worst). kErrorPassive: the controller
+/// reported errors (any CAN error frame) and has not reported error-active since; kBusOff: it
+/// reported bus-off and no restart since; kDown: the interface is down or gone.
+enum class BusState : std::uint8_t { kDisabled, kUp, kErrorPassive, kBusOff, kDown };
+
+/// "disabled", "up", "error-passive", "bus-off", "down".
+constexpr const char* bus_state_name(BusState s) noexcept {
+  switch (s) {
+    case BusState::kDisabled:
+      return "disabled";
+    case BusState::kUp:
+      return "up";
+    case BusState::kErrorPassive:
+      return "error-passive";
+    case BusState::kBusOff:
+      return "bus-off";
+    case BusState::kDown:
+      return "down";
+  }
+  return "?";
+}
 
 struct IoCounters {
   BusState bus_state = BusState::kDisabled;
@@ -19,7 +38,7 @@ struct IoCounters {
   std::uint64_t counter_failures = 0;  ///< alive counter frozen or jumped
   std::uint64_t bad_frames = 0;        ///< wrong DLC and the like
   std::uint64_t unknown_frames = 0;    ///< IDs not in the mapping
-  std::uint64_t error_frames = 0;      ///< CAN_ERR_FLAG frames
+  std::uint64_t error_frames = 0;      ///< CAN_ERR_FLAG frames (set bus_state error-passive)
   std::uint64_t out_of_range = 0;      ///< physical values clamped
   std::uint64_t send_no_buffer = 0;    ///< ENOBUFS on send
   std::uint64_t send_dropped = 0;

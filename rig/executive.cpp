@@ -128,6 +128,7 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
   PhaseTimer phases(clock_, t);
 
   for (io::CycleIo* a : io_) a->receive(t.wake_ns, signals_);
+  log_io_events(t.wake_ns);
   phases.end(io::Phase::kInputs);
   if (driver_ != nullptr) driver_->update(model_.time_s(), signals_);
   phases.end(io::Phase::kDriver);
@@ -149,6 +150,15 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
     if (const StopReason r = after_fault(status, t, end_ns); r != StopReason::kNone) return r;
   }
   return decision.action == OverrunAction::kAbort ? StopReason::kAbortAfter : StopReason::kNone;
+}
+
+/// The adapters' events (bus state changes, rate-limited reports) into the event log.
+void Executive::log_io_events(std::int64_t now_ns) noexcept {
+  io::IoEvent e;
+  for (io::CycleIo* a : io_) {
+    while (a->next_event(e))
+      log_.event(clock_.realtime_ns(), now_ns, e.name.data(), e.detail.data());
+  }
 }
 
 /// The model phase: one step, unless a held fault froze the model. On a vehicle fault the

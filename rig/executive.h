@@ -143,6 +143,7 @@ class Executive {
   struct LoopState;
   StopReason cycle(LoopState& loop) noexcept;
   model::StepStatus step_model() noexcept;
+  void log_io_events(std::int64_t now_ns) noexcept;
   StopReason after_fault(model::StepStatus status, const io::CycleTiming& t,
                          std::int64_t end_ns) noexcept;
   OverrunDecision handoff(io::CycleTiming& timing, PhaseTimer& phases,

@@ -35,18 +35,6 @@ std::string bins_json(const rt::LogHistogram& h) {
   return out + "]";
 }
 
-const char* bus_state_name(io::BusState s) {
-  switch (s) {
-    case io::BusState::kDisabled:
-      return "disabled";
-    case io::BusState::kUp:
-      return "up";
-    case io::BusState::kDown:
-      return "down";
-  }
-  return "?";
-}
-
 /// A decade histogram for humans: counts in [1, 10) us, [10, 100) us, ...
 std::string decades(const rt::LogHistogram& h) {
   std::string out;
@@ -81,10 +69,10 @@ std::string can_json(const io::IoCounters& c) {
       "\"error_frames\": %llu, \"out_of_range\": %llu, \"send_no_buffer\": %llu, "
       "\"send_dropped\": %llu, "
       "\"reopens\": %llu}",
-      bus_state_name(c.bus_state), ull(c.frames_received), ull(c.frames_sent), ull(c.rx_overflows),
-      ull(c.timeouts), ull(c.checksum_failures), ull(c.counter_failures), ull(c.bad_frames),
-      ull(c.unknown_frames), ull(c.error_frames), ull(c.out_of_range), ull(c.send_no_buffer),
-      ull(c.send_dropped), ull(c.reopens));
+      io::bus_state_name(c.bus_state), ull(c.frames_received), ull(c.frames_sent),
+      ull(c.rx_overflows), ull(c.timeouts), ull(c.checksum_failures), ull(c.counter_failures),
+      ull(c.bad_frames), ull(c.unknown_frames), ull(c.error_frames), ull(c.out_of_range),
+      ull(c.send_no_buffer), ull(c.send_dropped), ull(c.reopens));
 }
 
 /// [{"output": "LCM log out/run.lcm: No space left on device", "count": 12}, ...]
@@ -102,14 +90,19 @@ std::string write_failures_json(const std::vector<io::WriteFailures>& failures) 
 std::string summary_line(const Executive& e) {
   const auto& l = e.lateness();
   const auto& c = e.compute();
+  // The CAN bus when it is not simply up (error-passive, bus-off, down), so that a bench sees it.
+  const io::BusState bus = e.io_counters().bus_state;
+  const std::string can = bus == io::BusState::kDisabled || bus == io::BusState::kUp
+                              ? std::string()
+                              : std::string(", CAN ") + io::bus_state_name(bus);
   return fmt(
       "cycles %llu, misses %llu, sim %.3f s, lateness p50/p99/p99.9/max %.1f/%.1f/%.1f/%.1f us, "
-      "compute p50/p99/max %.1f/%.1f/%.1f us",
+      "compute p50/p99/max %.1f/%.1f/%.1f us%s",
       ull(e.cycles()), ull(e.deadline_misses()), e.sim_time_s(),
       static_cast<double>(l.quantile(0.5)) / 1e3, static_cast<double>(l.quantile(0.99)) / 1e3,
       static_cast<double>(l.quantile(0.999)) / 1e3, static_cast<double>(l.max()) / 1e3,
       static_cast<double>(c.quantile(0.5)) / 1e3, static_cast<double>(c.quantile(0.99)) / 1e3,
-      static_cast<double>(c.max()) / 1e3);
+      static_cast<double>(c.max()) / 1e3, can.c_str());
 }
 
 std::string summary_report(const Executive& e, const SummaryExtras& x) {

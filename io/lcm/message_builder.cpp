@@ -173,6 +173,12 @@ void fill_status(const Snapshot& snapshot, const RunInfo& info, const StatusTota
     case BusState::kUp:
       msg.bus_state = rig::rig_status_t::BUS_UP;
       break;
+    case BusState::kErrorPassive:
+      msg.bus_state = rig::rig_status_t::BUS_ERROR_PASSIVE;
+      break;
+    case BusState::kBusOff:
+      msg.bus_state = rig::rig_status_t::BUS_OFF;
+      break;
     case BusState::kDown:
       msg.bus_state = rig::rig_status_t::BUS_DOWN;
       break;

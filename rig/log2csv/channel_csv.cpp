@@ -177,6 +177,10 @@ class StatusCsv final : public ChannelCsv {
         return "up";
       case rig::rig_status_t::BUS_DOWN:
         return "down";
+      case rig::rig_status_t::BUS_ERROR_PASSIVE:
+        return "error-passive";
+      case rig::rig_status_t::BUS_OFF:
+        return "bus-off";
       default:
         return "disabled";
     }

@@ -1,5 +1,8 @@
 #include "io/can/bridge/can_bridge.h"
 
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
 #include <cstring>
 #include <span>
 #include <utility>
@@ -33,17 +36,84 @@ CanBridge::CanBridge(can::mapping::CanConfig config,
 void CanBridge::start(std::int64_t monotonic_ns) noexcept {
   rx_.reset(monotonic_ns, rx_signals_);
   tx_.start(monotonic_ns);
+  last_state_ = transport_.state();
   started_ = true;
+}
+
+void CanBridge::push_event(const char* name, const char* format, ...) noexcept {
+  if (event_count_ == events_.size()) {
+    ++events_dropped_;
+    return;
+  }
+  io::IoEvent& e = events_[(event_head_ + event_count_) % events_.size()];
+  std::snprintf(e.name.data(), e.name.size(), "%s", name);
+  std::va_list args;
+  va_start(args, format);
+  std::vsnprintf(e.detail.data(), e.detail.size(), format, args);
+  va_end(args);
+  ++event_count_;
+}
+
+bool CanBridge::next_event(io::IoEvent& event) noexcept {
+  if (event_count_ == 0) return false;
+  event = events_[event_head_];
+  event_head_ = (event_head_ + 1) % events_.size();
+  --event_count_;
+  if (events_dropped_ != drops_reported_) {
+    const std::size_t n = std::strlen(event.detail.data());
+    std::snprintf(event.detail.data() + n, event.detail.size() - n, " (%llu CAN events lost)",
+                  static_cast<unsigned long long>(events_dropped_ - drops_reported_));
+    drops_reported_ = events_dropped_;
+  }
+  return true;
+}
+
+/// One event per change of the bus state (error frames, bus-off, restart, link down/up).
+void CanBridge::watch_bus_state() noexcept {
+  const io::BusState now = transport_.state();
+  if (now == last_state_) return;
+  const char* name = "can_bus_up";
+  if (now == io::BusState::kErrorPassive) name = "can_error_passive";
+  if (now == io::BusState::kBusOff) name = "can_bus_off";
+  if (now == io::BusState::kDown) name = "can_bus_down";
+  push_event(name, "%s: bus %s -> %s (error frames %llu, last class 0x%03x, controller 0x%02x)",
+             transport_.settings().interface.c_str(), io::bus_state_name(last_state_),
+             io::bus_state_name(now),
+             static_cast<unsigned long long>(transport_.counters().error_frames),
+             static_cast<unsigned>(transport_.last_error_class()),
+             static_cast<unsigned>(transport_.last_error_controller()));
+  last_state_ = now;
+}
+
+void CanBridge::report_out_of_range(const can::mapping::OutOfRangeReport& r) noexcept {
+  const auto count = static_cast<unsigned long long>(r.count);
+  if (!std::isfinite(r.received) && std::strcmp(r.direction, "rx") == 0) {
+    push_event("out_of_range",
+               "rx %s.%s: %g is not finite, previous value kept; %llu since the last report",
+               r.message, r.signal, r.received, count);
+    return;
+  }
+  // As the engines clamp: beyond the maximum to it, everything else (below, NaN) to the minimum.
+  const double clamped = r.received > r.maximum ? r.maximum : r.minimum;
+  push_event("out_of_range",
+             "%s %s.%s: %g outside [%g, %g], clamped to %g; %llu since the last report",
+             r.direction, r.message, r.signal, r.received, r.minimum, r.maximum, clamped, count);
 }
 
 void CanBridge::receive(std::int64_t monotonic_ns, model::Signals& inputs) noexcept {
   if (!started_) start(monotonic_ns);
   transport_.service(monotonic_ns);
   transport_.drain([&](const can::transport::TransportFrame& f) {
-    rx_.on_frame(f.id, f.extended, f.data.data(), f.len, monotonic_ns, rx_signals_,
+    using can::mapping::FrameFormat;
+    const FrameFormat format =
+        f.remote ? FrameFormat::kRemote : (f.fd ? FrameFormat::kFd : FrameFormat::kClassic);
+    rx_.on_frame(f.id, f.extended, format, f.data.data(), f.len, monotonic_ns, rx_signals_,
                  engine_counters_);
   });
   rx_.check_timeouts(monotonic_ns, rx_signals_, engine_counters_);
+  watch_bus_state();
+  rx_.take_out_of_range_reports(
+      monotonic_ns, [this](const can::mapping::OutOfRangeReport& r) { report_out_of_range(r); });
   for (std::size_t i = 0; i < model::index(model::kFirstOutput); ++i) {
     if (!feeds_[i]) continue;
     inputs.value[i] = rx_signals_.value[i];
@@ -55,6 +125,8 @@ void CanBridge::transmit(std::int64_t monotonic_ns, const model::Signals& output
   if (!started_) start(monotonic_ns);
   const std::size_t n = tx_.due_frames(
       monotonic_ns, outputs, std::span<can::mapping::TxFrame>(tx_frames_), engine_counters_);
+  tx_.take_out_of_range_reports(
+      monotonic_ns, [this](const can::mapping::OutOfRangeReport& r) { report_out_of_range(r); });
   for (std::size_t i = 0; i < n; ++i) {
     const can::mapping::TxFrame& in = tx_frames_[i];
     can::transport::TransportFrame out;

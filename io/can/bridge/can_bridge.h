@@ -11,6 +11,11 @@
 /// allocation-free, exception-free and non-blocking. Frame times given to the RX engine are the
 /// loop's monotonic cycle time (the same clock as its timeouts); kernel receive timestamps
 /// (CLOCK_REALTIME) stay available to tools through the transport.
+///
+/// Events (next_event()): every change of the bus state (can_error_passive, can_bus_off,
+/// can_bus_down, can_bus_up) and the RX engine's rate-limited out_of_range reports, which name
+/// the signal, the value and the count. They wait in a fixed queue of kEventQueue; beyond that
+/// they are counted in events_dropped() and the loss is reported with the next event.
 
 #include <array>
 #include <cstdint>
@@ -26,6 +31,7 @@ namespace rig::io::can::bridge {
 class CanBridge final : public io::CycleIo {
  public:
   static constexpr std::size_t kMaxFramesPerCycle = 64;  ///< TX frames encoded per cycle
+  static constexpr std::size_t kEventQueue = 16;         ///< pending events at most
 
   /// `transport_settings.filter_ids` are filled from the RX mapping if `kernel_filter`. `feeds`:
   /// the model inputs this bridge writes (those routed to CAN).
@@ -35,6 +41,8 @@ class CanBridge final : public io::CycleIo {
   void receive(std::int64_t monotonic_ns, model::Signals& inputs) noexcept override;
   void transmit(std::int64_t monotonic_ns, const model::Signals& outputs) noexcept override;
   void read_counters(IoCounters& counters) const noexcept override;
+  bool next_event(io::IoEvent& event) noexcept override;
+  [[nodiscard]] std::uint64_t events_dropped() const noexcept { return events_dropped_; }
 
   [[nodiscard]] const can::transport::SocketCanTransport& transport() const noexcept {
     return transport_;
@@ -46,6 +54,11 @@ class CanBridge final : public io::CycleIo {
                                                        const can::mapping::CanConfig& config,
                                                        bool kernel_filter);
   void start(std::int64_t monotonic_ns) noexcept;
+  void watch_bus_state() noexcept;
+  void report_out_of_range(const can::mapping::OutOfRangeReport& r) noexcept;
+  /// Queues an event (printf-style detail); counts it as dropped if the queue is full.
+  void push_event(const char* name, const char* format, ...) noexcept
+      __attribute__((format(printf, 3, 4)));
 
   can::mapping::CanConfig config_;
   can::mapping::RxProcessor rx_;
@@ -56,6 +69,12 @@ class CanBridge final : public io::CycleIo {
   model::Signals rx_signals_{};  // what the RX engine writes; the fed inputs are copied out
   IoCounters engine_counters_{};
   std::array<can::mapping::TxFrame, kMaxFramesPerCycle> tx_frames_{};
+  io::BusState last_state_ = io::BusState::kUp;
+  std::array<io::IoEvent, kEventQueue> events_{};
+  std::size_t event_head_ = 0;
+  std::size_t event_count_ = 0;
+  std::uint64_t events_dropped_ = 0;
+  std::uint64_t drops_reported_ = 0;
 };
 
 }  // namespace rig::io::can::bridge

@@ -4,22 +4,10 @@
 #include "io/can/dbc/dbc_parser.h"
 
 namespace rig::io::can::bridge {
+namespace {
 
-CanSettings read_can_settings(config::StrictTable& can_table) {
-  CanSettings s;
-  s.interface = can_table.string("interface", "vcan0");
-  if (s.interface.empty() || s.interface.size() > 15) {
-    throw can_table.error("interface", "interface name must have 1..15 characters");
-  }
-  s.mapping_file = can_table.existing_path("mapping");
-  if (can_table.has("dbc")) s.dbc_file = can_table.existing_path("dbc");
-  s.fd = can_table.boolean("fd", true);
-  s.kernel_filter = can_table.boolean("kernel_filter", false);
-  can_table.finish();
-  return s;
-}
-
-std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings, const io::InputSet& feeds) {
+/// DBC and mapping as `settings` name them ([can] dbc overrides the mapping's `dbc`).
+can::mapping::CanConfig load_mapping(const CanSettings& settings) {
   can::mapping::CanConfig config;
   if (settings.dbc_file) {
     config.database = dbc::load_dbc(*settings.dbc_file);
@@ -31,11 +19,62 @@ std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings, const io::
   } else {
     config = can::mapping::load_can_config(settings.mapping_file);
   }
+  return config;
+}
+
+/// The first mapped message (RX or TX) that is a CAN FD frame, or nullptr.
+const dbc::MessageDef* first_fd_message(const can::mapping::CanConfig& config) {
+  for (const auto* list : {&config.mapping.rx, &config.mapping.tx}) {
+    for (const auto& binding : *list) {
+      const dbc::MessageDef& m = config.database.messages[binding.dbc_message];
+      if (m.is_fd()) return &m;
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+CanSettings read_can_settings(config::StrictTable& can_table) {
+  CanSettings s;
+  s.interface = can_table.string("interface", "vcan0");
+  if (s.interface.empty() || s.interface.size() > 15) {
+    throw can_table.error("interface", "interface name must have 1..15 characters");
+  }
+  s.mapping_file = can_table.existing_path("mapping");
+  if (can_table.has("dbc")) s.dbc_file = can_table.existing_path("dbc");
+  s.fd = can_table.boolean("fd", true);
+  s.kernel_filter = can_table.boolean("kernel_filter", false);
+  if (!s.fd) {
+    // A classic-only socket would drop every frame of an FD message without a word.
+    if (const dbc::MessageDef* m = first_fd_message(load_mapping(s))) {
+      throw can_table.error("fd", "false, but message " + m->name + " (" +
+                                      std::to_string(m->length_bytes) + " bytes) of " +
+                                      s.mapping_file.string() + " is a CAN FD frame");
+    }
+  }
+  can_table.finish();
+  return s;
+}
+
+std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings, const io::InputSet& feeds) {
+  can::mapping::CanConfig config = load_mapping(settings);
+  const dbc::MessageDef* fd_message = first_fd_message(config);
+  const std::string fd_name = fd_message != nullptr ? fd_message->name : "";
+  const std::uint32_t fd_bytes = fd_message != nullptr ? fd_message->length_bytes : 0;
   can::transport::TransportSettings transport;
   transport.interface = settings.interface;
   transport.fd = settings.fd;
-  return std::make_unique<CanBridge>(std::move(config), std::move(transport),
-                                     settings.kernel_filter, feeds);
+  auto bridge = std::make_unique<CanBridge>(std::move(config), std::move(transport),
+                                            settings.kernel_filter, feeds);
+  if (!fd_name.empty() && !bridge->transport().fd_capable()) {
+    throw config::ConfigError("CAN interface '" + settings.interface +
+                              "' has a classic MTU (CAN FD off): message " + fd_name + " (" +
+                              std::to_string(fd_bytes) + " bytes) of " +
+                              settings.mapping_file.string() + " needs CAN FD (`ip link set " +
+                              settings.interface + " mtu 72`, or map classic messages only)");
+  }
+  return bridge;
 }
 
 }  // namespace rig::io::can::bridge

@@ -6,7 +6,8 @@
 ///     interface = "vcan0"                    # SocketCAN interface (--can overrides; "none" = off)
 ///     mapping = "can/steering-bench.toml"    # mapping file (relative to the config file)
 ///     dbc = "can/steering-bench.dbc"         # optional: overrides the mapping file's `dbc`
-///     fd = true                              # optional: accept/send CAN FD frames
+///     fd = true                              # optional: accept/send CAN FD frames (false with
+///                                            #   an FD message mapped: error at `fd`)
 ///     kernel_filter = false                  # optional: CAN_RAW_FILTER on the RX message ids
 ///
 /// kernel_filter = false (default) lets every frame through so unknown ids are counted
@@ -36,8 +37,9 @@ struct CanSettings {
 CanSettings read_can_settings(config::StrictTable& can_table);
 
 /// Loads DBC and mapping, opens the transport; the bridge writes the inputs in `feeds` (those
-/// routed to CAN). Throws config::ConfigError (bad DBC/mapping) or can::transport::TransportError
-/// (no SocketCAN, unknown interface), both with a clear message.
+/// routed to CAN). Throws config::ConfigError (bad DBC/mapping; an FD message mapped on an
+/// interface with the classic MTU) or can::transport::TransportError (no SocketCAN, unknown
+/// interface), both with a clear message.
 std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings, const io::InputSet& feeds);
 
 }  // namespace rig::io::can::bridge

@@ -65,7 +65,10 @@ struct MessageDef {
   std::uint32_t cycle_time_ms = 0;
   int line = 0;
 
-  [[nodiscard]] bool is_fd() const { return length_bytes > 8; }
+  bool fd_format = false;  ///< BA_ "VFrameFormat" StandardCAN_FD / ExtendedCAN_FD
+
+  /// A CAN FD frame: longer than 8 bytes, or so declared by VFrameFormat.
+  [[nodiscard]] bool is_fd() const { return length_bytes > 8 || fd_format; }
   /// The DBC's own id: with bit 31 set for extended ids.
   [[nodiscard]] std::uint32_t dbc_id() const { return extended ? (id | 0x80000000u) : id; }
   [[nodiscard]] const SignalDef* find_signal(std::string_view signal_name) const;

@@ -580,6 +580,10 @@ class Parser {
     if (name == "GenMsgCycleTime" && !on_signal) {
       db_.messages[message].cycle_time_ms = cycle_time(value);
       explicit_cycle_[message] = true;
+    } else if (name == "VFrameFormat" && !on_signal) {
+      // ENUM index or name: 14 StandardCAN_FD, 15 ExtendedCAN_FD (an FD frame of <= 8 bytes).
+      db_.messages[message].fd_format =
+          value.text == "14" || value.text == "15" || value.text.ends_with("CAN_FD");
     } else if (name == "GenSigStartValue" && on_signal) {
       db_.messages[message].signals[signal].start_value_raw = attribute_number(value, name);
       explicit_start_[message][signal] = true;

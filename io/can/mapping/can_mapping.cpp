@@ -50,6 +50,7 @@ CounterSpec parse_counter(config::StrictTable t, const dbc::MessageDef& m) {
     throw t.error("signal", "counter must be an integer signal");
   c.modulus = static_cast<std::uint32_t>(t.number_in("modulus", 2.0, max_modulus));
   c.max_step = static_cast<std::uint32_t>(t.number_in("max_step", 1.0, 1.0, c.modulus - 1.0));
+  c.unlatch_steps = static_cast<std::uint32_t>(t.number_in("unlatch_steps", 1.0, 1.0, 1000.0));
   t.finish();
   return c;
 }

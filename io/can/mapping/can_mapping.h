@@ -10,6 +10,7 @@
 ///     message = "EPS_Status"            # BO_ name in the DBC
 ///     timeout_ms = 30                   # optional; default 3 x GenMsgCycleTime
 ///     counter = { signal = "EPS_AliveCounter", modulus = 16, max_step = 1 }     # optional
+///                                       # (+ unlatch_steps = 1: see below)
 ///     checksum = { signal = "EPS_Checksum", type = "crc8_sae_j1850", bytes = [1, 2, 3] }  # opt.
 ///     [[rx.signal]]
 ///     dbc = "EPS_MotorTorque"           # SG_ name in that message
@@ -39,9 +40,11 @@
 /// Unmapped TX signals are sent at their GenSigStartValue. Checksum `bytes` default to every
 /// byte of the message except those of the checksum signal; the checksum signal must be 8 bits.
 /// Given, each byte at most once (so at most the message's length, 64 at most for CAN FD).
-/// The alive counter must advance by 1..max_step (mod modulus) per frame; a frozen or jumping
-/// counter is a failure. Every name is checked against the DBC and model/signals.h, and every
-/// error is config::ConfigError("file:line: ...").
+/// The alive counter must advance by 1..max_step (mod modulus) per frame; a repeated (frozen) or
+/// jumping counter is a failure that latches the message: its frames are rejected until the
+/// counter has advanced properly `unlatch_steps` times in a row (default 1), also across a
+/// timeout (sequence_checker.h). Every name is checked against the DBC and model/signals.h, and
+/// every error is config::ConfigError("file:line: ...").
 
 #include <cstdint>
 #include <filesystem>
@@ -70,7 +73,8 @@ struct SignalBinding {
 struct CounterSpec {
   std::size_t dbc_signal = 0;
   std::uint32_t modulus = 16;
-  std::uint32_t max_step = 1;  ///< RX: accepted advance per frame is 1..max_step
+  std::uint32_t max_step = 1;       ///< RX: accepted advance per frame is 1..max_step
+  std::uint32_t unlatch_steps = 1;  ///< RX: proper steps in a row that end a counter failure
 };
 
 struct ChecksumSpec {

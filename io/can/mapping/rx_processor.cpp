@@ -1,6 +1,7 @@
 #include "io/can/mapping/rx_processor.h"
 
 #include <cmath>
+#include <limits>
 
 namespace rig::io::can::mapping {
 
@@ -11,11 +12,19 @@ RxProcessor::RxProcessor(const CanConfig& config) {
     Message m{.id = def.id,
               .extended = def.extended,
               .length_bytes = def.length_bytes,
+              .fd = def.is_fd(),
+              .name = def.name,
               .codec = dbc::MessageCodec(def),
               .bound = {},
               .counter = b.counter,
               .checksum = b.checksum,
               .timeout_ns = b.timeout_ns};
+    if (b.counter) {
+      m.sequence =
+          SequenceChecker(SequenceParams{.modulus = b.counter->modulus,
+                                         .max_delta = b.counter->max_step,
+                                         .good_steps_to_unlatch = b.counter->unlatch_steps});
+    }
     for (const SignalBinding& sb : b.signals) {
       const dbc::SignalDef& s = def.signals[sb.dbc_signal];
       m.bound.push_back(Bound{.codec_signal = sb.dbc_signal,
@@ -25,7 +34,8 @@ RxProcessor::RxProcessor(const CanConfig& config) {
                               .fallback = sb.fallback,
                               .minimum = s.minimum,
                               .maximum = s.maximum,
-                              .clamp = s.has_range()});
+                              .clamp = s.has_range(),
+                              .name = s.name});
     }
     messages_.push_back(std::move(m));
   }
@@ -41,13 +51,50 @@ void RxProcessor::reset(std::int64_t now_ns, model::Signals& signals) {
     m.last_ns = now_ns;
     m.timed_out = true;
     m.timeout_counted = false;
-    m.have_counter = false;
+    m.sequence.reset();
   }
 }
 
-RxResult RxProcessor::on_frame(std::uint32_t id, bool extended, const std::uint8_t* data,
-                               std::size_t len, std::int64_t time_ns, model::Signals& signals,
-                               io::IoCounters& counters) {
+bool RxProcessor::checksum_ok(const Message& m, const std::uint8_t* data) noexcept {
+  const ChecksumSpec& c = *m.checksum;
+  // Gather the covered bytes in their configured order (at most 64, on the stack).
+  std::uint8_t covered[64];
+  std::size_t n = 0;
+  for (std::uint8_t b : c.bytes) {
+    if (n < sizeof covered) covered[n++] = data[b];
+  }
+  const std::uint8_t expected =
+      c.type == ChecksumType::kXor ? xor8(covered, n) : crc8_sae_j1850(covered, n);
+  return m.codec.signal(c.dbc_signal).extract_raw(data) == expected;
+}
+
+void RxProcessor::decode(Message& m, const std::uint8_t* data, model::Signals& signals,
+                         io::IoCounters& counters) noexcept {
+  const int mux = m.codec.multiplexor_index();
+  const std::uint64_t mux_raw =
+      mux >= 0 ? m.codec.signal(static_cast<std::size_t>(mux)).extract_raw(data) : 0;
+  for (Bound& b : m.bound) {
+    if (!m.codec.present(b.codec_signal, mux_raw)) continue;
+    double physical = m.codec.signal(b.codec_signal).decode(data);
+    if (!std::isfinite(physical)) {
+      ++counters.out_of_range;  // NaN/inf from a float signal: keep the previous value
+      b.last_out_of_range = physical;
+      b.reports.count();
+      continue;
+    }
+    if (b.clamp && (physical < b.minimum || physical > b.maximum)) {
+      b.last_out_of_range = physical;
+      b.reports.count();
+      physical = physical < b.minimum ? b.minimum : b.maximum;
+      ++counters.out_of_range;
+    }
+    signals.set(b.model, physical * b.scale + b.offset, true);
+  }
+}
+
+RxResult RxProcessor::on_frame(std::uint32_t id, bool extended, FrameFormat format,
+                               const std::uint8_t* data, std::size_t len, std::int64_t time_ns,
+                               model::Signals& signals, io::IoCounters& counters) {
   Message* found = nullptr;
   for (Message& m : messages_) {
     if (m.id == id && m.extended == extended) {
@@ -60,58 +107,33 @@ RxResult RxProcessor::on_frame(std::uint32_t id, bool extended, const std::uint8
     return RxResult::kUnknownId;
   }
   Message& m = *found;
+  if (format == FrameFormat::kRemote) {
+    ++counters.bad_frames;
+    return RxResult::kRemoteFrame;
+  }
+  if ((format == FrameFormat::kFd) != m.fd) {
+    ++counters.bad_frames;
+    return RxResult::kWrongFormat;
+  }
   if (len != m.length_bytes || data == nullptr) {
     ++counters.bad_frames;
     return RxResult::kBadLength;
   }
-  if (m.checksum) {
-    const ChecksumSpec& c = *m.checksum;
-    // Gather the covered bytes in their configured order (at most 64, on the stack).
-    std::uint8_t covered[64];
-    std::size_t n = 0;
-    for (std::uint8_t b : c.bytes) covered[n++] = data[b];
-    const std::uint8_t expected =
-        c.type == ChecksumType::kXor ? xor8(covered, n) : crc8_sae_j1850(covered, n);
-    if (m.codec.signal(c.dbc_signal).extract_raw(data) != expected) {
-      ++counters.checksum_failures;
-      return RxResult::kChecksumFailure;
-    }
+  if (m.checksum && !checksum_ok(m, data)) {
+    ++counters.checksum_failures;
+    return RxResult::kChecksumFailure;
   }
   if (m.counter) {
-    const CounterSpec& c = *m.counter;
-    const std::uint64_t value = m.codec.signal(c.dbc_signal).extract_raw(data);
-    bool ok = value < c.modulus;
-    if (ok && m.have_counter) {
-      const std::uint64_t step = (value + c.modulus - m.last_counter) % c.modulus;
-      ok = step >= 1 && step <= c.max_step;
-    }
-    // Resynchronise on the received value either way: a single jump costs one frame, a frozen
-    // counter fails every frame.
-    if (value < c.modulus) {
-      m.last_counter = static_cast<std::uint32_t>(value);
-      m.have_counter = true;
-    }
-    if (!ok) {
+    const std::uint64_t raw = m.codec.signal(m.counter->dbc_signal).extract_raw(data);
+    const auto value = raw > std::numeric_limits<std::uint32_t>::max()
+                           ? std::numeric_limits<std::uint32_t>::max()
+                           : static_cast<std::uint32_t>(raw);
+    if (!accepted(m.sequence.check(value))) {
       ++counters.counter_failures;
       return RxResult::kCounterFailure;
     }
   }
-  const int mux = m.codec.multiplexor_index();
-  const std::uint64_t mux_raw =
-      mux >= 0 ? m.codec.signal(static_cast<std::size_t>(mux)).extract_raw(data) : 0;
-  for (const Bound& b : m.bound) {
-    if (!m.codec.present(b.codec_signal, mux_raw)) continue;
-    double physical = m.codec.signal(b.codec_signal).decode(data);
-    if (!std::isfinite(physical)) {
-      ++counters.out_of_range;  // NaN/inf from a float signal: keep the previous value
-      continue;
-    }
-    if (b.clamp && (physical < b.minimum || physical > b.maximum)) {
-      physical = physical < b.minimum ? b.minimum : b.maximum;
-      ++counters.out_of_range;
-    }
-    signals.set(b.model, physical * b.scale + b.offset, true);
-  }
+  decode(m, data, signals, counters);
   m.last_ns = time_ns;
   m.timed_out = false;
   m.timeout_counted = false;
@@ -126,8 +148,8 @@ void RxProcessor::check_timeouts(std::int64_t now_ns, model::Signals& signals,
       ++counters.timeouts;
       m.timeout_counted = true;
     }
+    if (!m.timed_out) m.sequence.restart();  // once per timeout: a new sequence, a latch stays
     m.timed_out = true;
-    m.have_counter = false;  // the next frame starts a new counter sequence
     apply_fallback(m, signals);
   }
 }

@@ -12,12 +12,17 @@ TxScheduler::TxScheduler(const CanConfig& config) {
     Message m{.id = def.id,
               .extended = def.extended,
               .length_bytes = def.length_bytes,
+              .fd = def.is_fd(),
               .codec = dbc::MessageCodec(def),
               .physical = {},
               .bound = b.signals,
               .minimum = {},
               .maximum = {},
               .clamp = {},
+              .name = def.name,
+              .names = {},
+              .reports = {},
+              .last_out_of_range = {},
               .mux_pages = {},
               .next_page = 0,
               .counter = b.counter,
@@ -41,6 +46,9 @@ TxScheduler::TxScheduler(const CanConfig& config) {
       m.minimum.push_back(s.minimum);
       m.maximum.push_back(s.maximum);
       m.clamp.push_back(s.has_range());
+      m.names.push_back(s.name);
+      m.reports.emplace_back();
+      m.last_out_of_range.push_back(0.0);
     }
     messages_.push_back(std::move(m));
   }
@@ -60,6 +68,8 @@ void TxScheduler::encode(std::size_t i, const model::Signals& signals, TxFrame& 
     if (b.model) physical = (signals[*b.model] - b.offset) / b.scale;
     if (m.clamp[k] && !(physical >= m.minimum[k] && physical <= m.maximum[k])) {
       // NaN goes to the minimum too: never send an undefined value.
+      m.last_out_of_range[k] = physical;
+      m.reports[k].count();
       physical = physical > m.maximum[k] ? m.maximum[k] : m.minimum[k];
       ++counters.out_of_range;
     }
@@ -73,7 +83,7 @@ void TxScheduler::encode(std::size_t i, const model::Signals& signals, TxFrame& 
   }
   frame.id = m.id;
   frame.extended = m.extended;
-  frame.fd = m.length_bytes > 8;
+  frame.fd = m.fd;
   frame.len = static_cast<std::uint8_t>(m.length_bytes);
   m.codec.encode(m.physical, frame.data.data());
   for (const SignalBinding& b : m.bound) {  // after a vehicle fault, say: its SNA value

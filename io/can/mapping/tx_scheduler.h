@@ -12,10 +12,12 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "io/can/dbc/signal_codec.h"
 #include "io/can/mapping/can_mapping.h"
+#include "io/can/mapping/report_limiter.h"
 #include "io/io_counters.h"
 #include "model/signals.h"
 
@@ -50,6 +52,25 @@ class TxScheduler {
   void encode(std::size_t i, const model::Signals& signals, TxFrame& frame,
               io::IoCounters& counters);
 
+  /// Hands every due out-of-range report to `visit(const OutOfRangeReport&)` (direction "tx"):
+  /// per signal the first clamp at once, then at most one a second with the count since.
+  template <class Visitor>
+  void take_out_of_range_reports(std::int64_t now_ns, Visitor&& visit) noexcept {
+    for (Message& m : messages_) {
+      for (std::size_t k = 0; k < m.bound.size(); ++k) {
+        const std::uint64_t n = m.reports[k].take_due(now_ns);
+        if (n == 0) continue;
+        visit(OutOfRangeReport{.direction = "tx",
+                               .message = m.name.c_str(),
+                               .signal = m.names[k].c_str(),
+                               .received = m.last_out_of_range[k],
+                               .minimum = m.minimum[k],
+                               .maximum = m.maximum[k],
+                               .count = n});
+      }
+    }
+  }
+
   [[nodiscard]] std::size_t message_count() const { return messages_.size(); }
   [[nodiscard]] std::int64_t period_ns(std::size_t i) const { return messages_[i].period_ns; }
 
@@ -58,12 +79,17 @@ class TxScheduler {
     std::uint32_t id = 0;
     bool extended = false;
     std::uint32_t length_bytes = 0;
+    bool fd = false;
     dbc::MessageCodec codec;
     std::vector<double> physical;  ///< per DBC signal, start values preset
     std::vector<SignalBinding> bound;
     std::vector<double> minimum, maximum;  ///< per bound signal
     std::vector<bool> clamp;
-    std::vector<std::uint32_t> mux_pages;  ///< multiplexor values, round-robin per send
+    std::string name;                       ///< DBC message name, for reports
+    std::vector<std::string> names;         ///< per bound signal: DBC signal name
+    std::vector<ReportLimiter> reports;     ///< per bound signal
+    std::vector<double> last_out_of_range;  ///< per bound signal
+    std::vector<std::uint32_t> mux_pages;   ///< multiplexor values, round-robin per send
     std::size_t next_page = 0;
     std::optional<CounterSpec> counter;
     std::optional<ChecksumSpec> checksum;

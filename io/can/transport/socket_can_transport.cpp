@@ -25,6 +25,9 @@ namespace {
 constexpr std::size_t kControlBytes =
     CMSG_SPACE(sizeof(struct timespec)) + CMSG_SPACE(sizeof(std::uint32_t));
 
+/// The interface's MTU (CAN_MTU: classic only, CANFD_MTU: FD too), 0 if it cannot be read.
+int interface_mtu(const std::string& name);
+
 bool is_down_errno(int err) { return err == ENETDOWN || err == ENODEV || err == ENXIO; }
 
 /// Fills `req` with the interface name; false if it does not fit.
@@ -33,6 +36,16 @@ bool set_name(ifreq& req, const std::string& name) {
   if (name.empty() || name.size() >= sizeof(req.ifr_name)) return false;
   std::memcpy(req.ifr_name, name.data(), name.size());
   return true;
+}
+
+int interface_mtu(const std::string& name) {
+  const int fd = ::socket(PF_CAN, SOCK_RAW | SOCK_CLOEXEC, CAN_RAW);
+  if (fd < 0) return 0;
+  ifreq req{};
+  int mtu = 0;
+  if (set_name(req, name) && ::ioctl(fd, SIOCGIFMTU, &req) == 0) mtu = req.ifr_mtu;
+  ::close(fd);
+  return mtu;
 }
 
 }  // namespace
@@ -89,6 +102,7 @@ SocketCanTransport::SocketCanTransport(TransportSettings settings)
     rx_->msgs[i].msg_hdr.msg_iov = &rx_->iovs[i];
     rx_->msgs[i].msg_hdr.msg_iovlen = 1;
   }
+  fd_capable_ = interface_mtu(ifname) >= static_cast<int>(CANFD_MTU);
   const int fd = open_socket();
   if (fd < 0) {
     const int err = -fd;
@@ -164,6 +178,21 @@ void SocketCanTransport::go_down() noexcept {
   // The socket stays open until the reopen replaces it; reads on it just fail.
 }
 
+void SocketCanTransport::on_error_frame(const ::canfd_frame& frame) noexcept {
+  ++counters_.error_frames;
+  last_error_class_ = frame.can_id & CAN_ERR_MASK;
+  last_error_ctrl_ = frame.len > 1 ? frame.data[1] : 0;
+  if ((last_error_class_ & CAN_ERR_BUSOFF) != 0) {
+    controller_ = BusState::kBusOff;
+  } else if ((last_error_class_ & CAN_ERR_RESTARTED) != 0) {
+    controller_ = BusState::kUp;
+  } else if ((last_error_class_ & CAN_ERR_CRTL) != 0 && last_error_ctrl_ == CAN_ERR_CRTL_ACTIVE) {
+    if (controller_ == BusState::kErrorPassive) controller_ = BusState::kUp;
+  } else if (controller_ == BusState::kUp) {
+    controller_ = BusState::kErrorPassive;  // bus-off ends only with a restart
+  }
+}
+
 void SocketCanTransport::service(std::int64_t monotonic_ns) noexcept {
   if (state_ == BusState::kDown) {
     if (monotonic_ns < next_reopen_ns_) return;
@@ -174,6 +203,7 @@ void SocketCanTransport::service(std::int64_t monotonic_ns) noexcept {
     fd_ = fd;
     last_overflow_ = 0;
     state_ = BusState::kUp;
+    controller_ = BusState::kUp;  // a link down/up restarts the controller (error-active)
     ++counters_.reopens;
     return;
   }
@@ -231,7 +261,7 @@ bool SocketCanTransport::read_batch(std::size_t& got) noexcept {
       continue;
     }
     if ((raw.can_id & CAN_ERR_FLAG) != 0) {
-      ++counters_.error_frames;
+      on_error_frame(raw);
       continue;
     }
     TransportFrame& out = batch_[got];

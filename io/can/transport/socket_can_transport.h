@@ -6,6 +6,10 @@
 ///   kernel receive timestamps (SO_TIMESTAMPNS), kernel drop counts (SO_RXQ_OVFL), error frames
 ///   enabled (CAN_RAW_ERR_FILTER = all classes) and counted, never handed over.
 /// - send() never blocks (MSG_DONTWAIT); ENOBUFS follows the rule of SendRetryQueue.
+/// - Error frames set the controller state: bus-off (CAN_ERR_BUSOFF) until a restart
+///   (CAN_ERR_RESTARTED); any other error frame error-passive until the controller reports
+///   error-active again (CAN_ERR_CRTL_ACTIVE) or restarts. state() gives the worse of that and
+///   the link state.
 /// - ENETDOWN / ENODEV from any call flags the bus down (io::BusState::kDown); sends are then
 ///   dropped and counted. service() tries to reopen at most every `reopen_interval_ns`: a new
 ///   socket, SIOCGIFFLAGS (still down -> stay down), SIOCGIFINDEX, the socket options, bind.
@@ -73,7 +77,17 @@ class SocketCanTransport {
   /// Sends one frame without blocking.
   SendStatus send(const TransportFrame& frame) noexcept;
 
-  [[nodiscard]] BusState state() const noexcept { return state_; }
+  /// The link state (up/down) combined with the controller's error state (error-passive,
+  /// bus-off): the worse of both.
+  [[nodiscard]] BusState state() const noexcept {
+    return state_ == BusState::kUp ? controller_ : state_;
+  }
+  /// The class bits of the last error frame (can_id & CAN_ERR_MASK) and its data[1] (controller
+  /// status), 0 before the first.
+  [[nodiscard]] std::uint32_t last_error_class() const noexcept { return last_error_class_; }
+  [[nodiscard]] std::uint8_t last_error_controller() const noexcept { return last_error_ctrl_; }
+  /// Whether the interface carries CAN FD frames (its MTU is CANFD_MTU), read at construction.
+  [[nodiscard]] bool fd_capable() const noexcept { return fd_capable_; }
   [[nodiscard]] const TransportCounters& counters() const noexcept { return counters_; }
   [[nodiscard]] const TransportSettings& settings() const noexcept { return settings_; }
   /// The socket, for poll() in tests and tools; -1 while down.
@@ -88,11 +102,16 @@ class SocketCanTransport {
   enum class Raw : std::uint8_t { kSent, kNoBuffer, kDown, kInvalid };
   Raw send_now(const TransportFrame& frame) noexcept;
   void go_down() noexcept;
+  void on_error_frame(const ::canfd_frame& frame) noexcept;
 
   TransportSettings settings_;
   std::vector<::can_filter> filters_;  // sized once at construction
   int fd_ = -1;
-  BusState state_ = BusState::kDown;
+  BusState state_ = BusState::kDown;     // link: kUp or kDown
+  BusState controller_ = BusState::kUp;  // kUp, kErrorPassive or kBusOff
+  std::uint32_t last_error_class_ = 0;
+  std::uint8_t last_error_ctrl_ = 0;
+  bool fd_capable_ = false;
   std::int64_t next_reopen_ns_ = 0;
   std::uint32_t last_overflow_ = 0;  // SO_RXQ_OVFL is cumulative per socket
   TransportCounters counters_;

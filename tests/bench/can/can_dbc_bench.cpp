@@ -70,7 +70,8 @@ void BM_RxOnFrame(benchmark::State& state) {
     frame[7] = can::crc8_sae_j1850(frame.data(), 7);
     k = (k + 1) % 16;
     t += 10'000'000;
-    benchmark::DoNotOptimize(rx.on_frame(0x200, false, frame.data(), 8, t, signals, counters));
+    benchmark::DoNotOptimize(rx.on_frame(0x200, false, can::FrameFormat::kClassic, frame.data(), 8,
+                                         t, signals, counters));
   }
   if (counters.checksum_failures + counters.counter_failures != 0) state.SkipWithError("rejected");
 }

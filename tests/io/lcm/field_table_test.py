@@ -143,7 +143,8 @@ def expected_columns(type_name, msg):
             else:
                 columns.update({element_column(name, i): v for i, v in enumerate(value)})
     elif type_name == "rig_status_t":  # input_valid[i] -> input_valid_<input_name[i]>
-        names = {"BUS_DISABLED": "disabled", "BUS_UP": "up", "BUS_DOWN": "down"}
+        names = {"BUS_DISABLED": "disabled", "BUS_UP": "up", "BUS_DOWN": "down",
+                 "BUS_ERROR_PASSIVE": "error-passive", "BUS_OFF": "bus-off"}
         bus = {getattr(rig.rig_status_t, k): v for k, v in names.items()}
         special = {"num_inputs", "input_name", "input_valid", "bus_state"}
         for _, name, dim in fields:

@@ -87,6 +87,23 @@ TEST(DbcParser, ExtendedIdAndCanFdLength) {
   EXPECT_EQ(db.find_message(0x18FF0102u, false), nullptr);
 }
 
+TEST(DbcParser, VFrameFormatMarksShortCanFdFrames) {
+  const Database db = parse_dbc(R"(BO_ 1 Fd8: 8 A
+BO_ 2 Classic: 8 A
+BO_ 3 FdByName: 4 A
+BA_DEF_ BO_ "VFrameFormat" ENUM "StandardCAN","ExtendedCAN","reserved","J1939PG","reserved","reserved","reserved","reserved","reserved","reserved","reserved","reserved","reserved","reserved","StandardCAN_FD","ExtendedCAN_FD";
+BA_DEF_DEF_ "VFrameFormat" "StandardCAN";
+BA_ "VFrameFormat" BO_ 1 14;
+BA_ "VFrameFormat" BO_ 2 0;
+BA_ "VFrameFormat" BO_ 3 "StandardCAN_FD";
+)",
+                                "t.dbc");
+  ASSERT_EQ(db.messages.size(), 3u);
+  EXPECT_TRUE(db.messages[0].is_fd());   // 8 bytes, but an FD frame
+  EXPECT_FALSE(db.messages[1].is_fd());  // classic
+  EXPECT_TRUE(db.messages[2].is_fd());
+}
+
 TEST(DbcParser, MultiplexedSignals) {
   const Database db = parse_dbc(R"(BO_ 1 M: 8 A
  SG_ Sw M : 0|4@1+ (1,0) [0|15] "" B

@@ -50,7 +50,8 @@ class RxTest : public ::testing::Test {
 
   can::mapping::RxResult feed(std::uint32_t id, const std::array<std::uint8_t, 8>& d,
                               std::int64_t t_ns, bool extended = false) {
-    return rx_.on_frame(id, extended, d.data(), d.size(), t_ns, signals_, counters_);
+    return rx_.on_frame(id, extended, can::mapping::FrameFormat::kClassic, d.data(), d.size(), t_ns,
+                        signals_, counters_);
   }
 
   can::mapping::CanConfig config_;
@@ -96,7 +97,8 @@ TEST_F(RxTest, RejectsBadChecksumLengthUnknownId) {
             can::mapping::RxResult::kChecksumFailure);
   EXPECT_EQ(counters_.checksum_failures, 2u);
   const auto good = frame("EPS_Status", {{"EPS_MotorTorque", 2.0}}, 0);
-  EXPECT_EQ(rx_.on_frame(0x200, false, good.data(), 7, 1, signals_, counters_),
+  EXPECT_EQ(rx_.on_frame(0x200, false, can::mapping::FrameFormat::kClassic, good.data(), 7, 1,
+                         signals_, counters_),
             can::mapping::RxResult::kBadLength);
   EXPECT_EQ(counters_.bad_frames, 1u);
   EXPECT_EQ(feed(0x7FF, good, 1), can::mapping::RxResult::kUnknownId);
@@ -123,6 +125,72 @@ TEST_F(RxTest, AliveCounterFrozenAndJump) {
   EXPECT_EQ(feed(0x200, frame("EPS_Status", {{"EPS_MotorTorque", 4.0}}, 6), 7 * kMs),
             can::mapping::RxResult::kAccepted);  // resynchronised on 5
   EXPECT_DOUBLE_EQ(signals_[Signal::kAssistTorque], 4.0);
+}
+
+TEST_F(RxTest, FrozenCounterStaysRejectedAcrossTimeouts) {
+  // Before the latch, each timeout started a new sequence and let one frame of a frozen sender
+  // through: with frames every 10 ms and a 30 ms timeout, 1 in 4 read valid.
+  EXPECT_EQ(feed(0x200, frame("EPS_Status", {{"EPS_MotorTorque", 1.0}}, 3), 0),
+            can::mapping::RxResult::kAccepted);
+  int accepted = 0;
+  for (int k = 1; k <= 200; ++k) {
+    const std::int64_t t = k * 10 * kMs;
+    rx_.check_timeouts(t, signals_, counters_);
+    if (feed(0x200, frame("EPS_Status", {{"EPS_MotorTorque", 9.0}}, 3), t) ==
+        can::mapping::RxResult::kAccepted)
+      ++accepted;
+  }
+  EXPECT_EQ(accepted, 0);
+  EXPECT_EQ(counters_.counter_failures, 200u);
+  rx_.check_timeouts(2001 * kMs, signals_, counters_);
+  EXPECT_FALSE(signals_.valid[model::index(Signal::kAssistTorque)]);
+  EXPECT_DOUBLE_EQ(signals_[Signal::kAssistTorque], 0.0);  // the fallback, not 9 Nm
+  // The counter moves again (one proper step from the frozen 3): accepted.
+  EXPECT_EQ(feed(0x200, frame("EPS_Status", {{"EPS_MotorTorque", 2.0}}, 4), 2010 * kMs),
+            can::mapping::RxResult::kAccepted);
+  EXPECT_DOUBLE_EQ(signals_[Signal::kAssistTorque], 2.0);
+}
+
+TEST_F(RxTest, RemoteAndWrongFormatFramesAreBadFrames) {
+  const auto good = frame("EPS_Status", {{"EPS_MotorTorque", 3.0}}, 0);
+  using can::mapping::FrameFormat;
+  const std::array<std::uint8_t, 8> zeros{};
+  EXPECT_EQ(
+      rx_.on_frame(0x200, false, FrameFormat::kRemote, zeros.data(), 8, 1, signals_, counters_),
+      can::mapping::RxResult::kRemoteFrame);
+  EXPECT_EQ(rx_.on_frame(0x200, false, FrameFormat::kFd, good.data(), 8, 2, signals_, counters_),
+            can::mapping::RxResult::kWrongFormat);  // FD frame on a classic message's id
+  EXPECT_EQ(counters_.bad_frames, 2u);
+  EXPECT_FALSE(signals_.valid[model::index(Signal::kAssistTorque)]);  // nothing decoded
+  EXPECT_EQ(
+      rx_.on_frame(0x7FF, false, FrameFormat::kRemote, zeros.data(), 0, 3, signals_, counters_),
+      can::mapping::RxResult::kUnknownId);  // an id the mapping does not know
+  EXPECT_EQ(feed(0x200, good, 4), can::mapping::RxResult::kAccepted);
+  EXPECT_DOUBLE_EQ(signals_[Signal::kAssistTorque], 3.0);
+}
+
+TEST_F(RxTest, OutOfRangeReportsNameTheSignalRateLimited) {
+  std::vector<can::mapping::OutOfRangeReport> reports;
+  const auto take = [&](std::int64_t now) {
+    rx_.take_out_of_range_reports(
+        now, [&](const can::mapping::OutOfRangeReport& r) { reports.push_back(r); });
+  };
+  // 1 kHz of 20 Nm frames for 2.5 s: the first report at once, then one a second.
+  for (int k = 0; k < 2500; ++k) {
+    const std::int64_t t = k * kMs;
+    feed(0x200, frame("EPS_Status", {{"EPS_MotorTorque", 20.0}}, k % 16), t);
+    take(t);
+  }
+  ASSERT_EQ(reports.size(), 3u);
+  EXPECT_STREQ(reports[0].message, "EPS_Status");
+  EXPECT_STREQ(reports[0].signal, "EPS_MotorTorque");
+  EXPECT_DOUBLE_EQ(reports[0].received, 20.0);
+  EXPECT_DOUBLE_EQ(reports[0].minimum, -15.0);
+  EXPECT_DOUBLE_EQ(reports[0].maximum, 15.0);
+  EXPECT_EQ(reports[0].count, 1u);
+  EXPECT_EQ(reports[1].count, 1000u);  // t = 1 ms .. 1000 ms
+  EXPECT_EQ(reports[2].count, 1000u);
+  EXPECT_EQ(counters_.out_of_range, 2500u);  // the counter keeps every one
 }
 
 TEST_F(RxTest, OutOfRangeIsClampedAndCounted) {
@@ -265,6 +333,16 @@ TEST_F(TxTest, ValuesConvertedAndClamped) {
   tx_.encode(find("RIG_VehicleSpeed"), signals_, f, counters_);
   EXPECT_DOUBLE_EQ(decode(find("RIG_VehicleSpeed"), "VehicleSpeed"), 320.0);
   EXPECT_EQ(counters_.out_of_range, 1u);
+  std::vector<can::mapping::OutOfRangeReport> reports;
+  tx_.take_out_of_range_reports(
+      0, [&](const can::mapping::OutOfRangeReport& r) { reports.push_back(r); });
+  ASSERT_EQ(reports.size(), 1u);  // the clamped signal, named
+  EXPECT_STREQ(reports[0].direction, "tx");
+  EXPECT_STREQ(reports[0].message, "RIG_VehicleSpeed");
+  EXPECT_STREQ(reports[0].signal, "VehicleSpeed");
+  EXPECT_GT(reports[0].received, 320.0);
+  EXPECT_DOUBLE_EQ(reports[0].maximum, 320.0);
+  EXPECT_EQ(reports[0].count, 1u);
   tx_.encode(find("RIG_VehicleDynamics"), signals_, f, counters_);
   EXPECT_FLOAT_EQ(static_cast<float>(decode(find("RIG_VehicleDynamics"), "YawRate")),
                   static_cast<float>(-0.25 * 180.0 / std::numbers::pi));
@@ -361,11 +439,13 @@ BA_ "GenMsgCycleTime" BO_ 16 10;
   can::mapping::RxProcessor rx(rc);
   model::Signals in;
   rx.reset(0, in);
-  EXPECT_EQ(rx.on_frame(16, false, f1.data.data(), 4, 1, in, counters),
+  EXPECT_EQ(rx.on_frame(16, false, can::mapping::FrameFormat::kClassic, f1.data.data(), 4, 1, in,
+                        counters),
             can::mapping::RxResult::kAccepted);
   EXPECT_NEAR(in[Signal::kYawRate], -5.7 * std::numbers::pi / 180, 1e-12);
   EXPECT_FALSE(in.valid[model::index(Signal::kVehicleSpeed)]);  // page 0 not seen yet
-  EXPECT_EQ(rx.on_frame(16, false, f0.data.data(), 4, 2, in, counters),
+  EXPECT_EQ(rx.on_frame(16, false, can::mapping::FrameFormat::kClassic, f0.data.data(), 4, 2, in,
+                        counters),
             can::mapping::RxResult::kAccepted);
   EXPECT_NEAR(in[Signal::kVehicleSpeed], 10.0, 1e-12);
 }

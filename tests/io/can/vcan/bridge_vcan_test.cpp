@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <linux/can.h>
+#include <linux/can/error.h>
 #include <net/if.h>
 #include <signal.h>
 #include <sys/socket.h>
@@ -348,7 +349,7 @@ TEST(BridgeVcan, GarbageIsCountedAndDownUpIsSurvived) {
   EXPECT_GE(c.bad_frames, 3u);        // 200#0102, 220#01, 200## (FD, 2 bytes): wrong length
   EXPECT_GT(c.unknown_frames, 100u);  // random ids
   EXPECT_EQ(c.error_frames, 1u);
-  EXPECT_EQ(c.bus_state, BusState::kUp);
+  EXPECT_EQ(c.bus_state, BusState::kErrorPassive);  // an error frame (issue 13)
   const auto& t = bridge->transport().counters();
   // Every frame of the flood was either received (and counted by kind) or dropped by the kernel.
   EXPECT_GE(c.frames_received + t.rx_overflows, 5000u + 3u + 1u);
@@ -375,6 +376,51 @@ TEST(BridgeVcan, GarbageIsCountedAndDownUpIsSurvived) {
   EXPECT_GE(counters_of(*bridge).frames_sent, sent + 40u);  // 100 ms: >= 4 x 10 ms messages x 10
 }
 
+TEST(BridgeVcan, RemoteFramesBusOffAndClampsGiveCountsAndEvents) {
+  RIG_REQUIRE_VCAN();
+  auto bridge = make_bridge("vcan0");
+  model::Signals in = can_inputs();
+  model::Signals out{};
+  Loop loop;
+  std::vector<std::pair<std::string, std::string>> events;
+  auto cycle = [&] {
+    const std::int64_t t = loop.next();
+    bridge->receive(t, in);
+    bridge->transmit(t, out);
+    io::IoEvent e;
+    while (bridge->next_event(e)) events.emplace_back(e.name.data(), e.detail.data());
+  };
+  for (int i = 0; i < 20; ++i) cycle();
+  // An RTR frame on EPS_Status, then EPS_Status at 20 Nm (range [-15, 15]) with counter 3 and
+  // its CRC-8 SAE J1850, then a bus-off error frame.
+  ASSERT_EQ(sh("cansend vcan0 200#R && cansend vcan0 200#D007000000000324"), 0);
+  {
+    const int fd = socket(PF_CAN, SOCK_RAW, CAN_RAW);
+    sockaddr_can addr{};
+    addr.can_family = AF_CAN;
+    addr.can_ifindex = static_cast<int>(if_nametoindex("vcan0"));
+    ASSERT_EQ(bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)), 0);
+    can_frame err{};
+    err.can_id = CAN_ERR_FLAG | CAN_ERR_BUSOFF;
+    err.len = CAN_ERR_DLC;
+    ASSERT_EQ(write(fd, &err, sizeof(err)), CAN_MTU);
+    close(fd);
+  }
+  for (int i = 0; i < 5000 && counters_of(*bridge).error_frames < 1; ++i) cycle();
+  for (int i = 0; i < 20; ++i) cycle();
+  const auto c = counters_of(*bridge);
+  EXPECT_EQ(c.bad_frames, 1u);  // the RTR frame
+  EXPECT_EQ(c.bus_state, BusState::kBusOff);
+  const auto has = [&](const std::string& name, const std::string& detail_start) {
+    return std::any_of(events.begin(), events.end(), [&](const auto& e) {
+      return e.first == name && e.second.rfind(detail_start, 0) == 0;
+    });
+  };
+  EXPECT_TRUE(has("out_of_range",
+                  "rx EPS_Status.EPS_MotorTorque: 20 outside [-15, 15], clamped to 15; 1 since"));
+  EXPECT_TRUE(has("can_bus_off", "vcan0: bus up -> bus-off (error frames 1, last class 0x040"));
+}
+
 TEST(BridgeVcan, ReplayedEcuTrafficGivesTheSameResultsTwice) {
   RIG_REQUIRE_VCAN();
   const std::string log = out_dir() + "/ecu-traffic.log";
@@ -397,8 +443,8 @@ TEST(BridgeVcan, ReplayedEcuTrafficGivesTheSameResultsTwice) {
     auto drain = [&] {
       transport.drain([&](const can::transport::TransportFrame& f) {
         // Frame k at a nominal 10 ms spacing: results depend on the data, not on arrival time.
-        if (rx.on_frame(f.id, f.extended, f.data.data(), f.len, ++k * 10'000'000, s, c) ==
-            can::mapping::RxResult::kAccepted) {
+        if (rx.on_frame(f.id, f.extended, can::mapping::FrameFormat::kClassic, f.data.data(), f.len,
+                        ++k * 10'000'000, s, c) == can::mapping::RxResult::kAccepted) {
           assist.push_back(s[Signal::kAssistTorque]);
         }
       });

@@ -172,8 +172,56 @@ TEST(TransportVcan, ErrorFramesAreCountedNotDelivered) {
   ASSERT_TRUE(cycle_until(
       transport, got, [&] { return got.size() >= 1 && transport.counters().error_frames >= 5; }));
   EXPECT_EQ(transport.counters().error_frames, 5u);
+  EXPECT_EQ(transport.state(), BusState::kErrorPassive);
   ASSERT_EQ(got.size(), 1u);
   EXPECT_EQ(got[0].id, 0x100u);
+}
+
+TEST(TransportVcan, BusOffUntilRestartErrorPassiveUntilErrorActive) {
+  RIG_REQUIRE_VCAN();
+  can::transport::SocketCanTransport transport(settings_for("vcan0"));
+  const int fd = raw_socket("vcan0");
+  ASSERT_GE(fd, 0);
+  std::vector<can::transport::TransportFrame> got;
+  auto inject = [&](canid_t classes, std::uint8_t controller) {
+    can_frame err{};
+    err.can_id = CAN_ERR_FLAG | classes;
+    err.len = CAN_ERR_DLC;
+    err.data[1] = controller;
+    const std::uint64_t before = transport.counters().error_frames;
+    ASSERT_EQ(write(fd, &err, sizeof(err)), CAN_MTU);
+    ASSERT_TRUE(
+        cycle_until(transport, got, [&] { return transport.counters().error_frames > before; }));
+  };
+  EXPECT_EQ(transport.state(), BusState::kUp);
+  inject(CAN_ERR_BUSOFF, 0);
+  EXPECT_EQ(transport.state(), BusState::kBusOff);
+  EXPECT_EQ(transport.last_error_class(), static_cast<std::uint32_t>(CAN_ERR_BUSOFF));
+  inject(CAN_ERR_CRTL, CAN_ERR_CRTL_ACTIVE);  // only a restart ends bus-off
+  EXPECT_EQ(transport.state(), BusState::kBusOff);
+  inject(CAN_ERR_RESTARTED, 0);
+  EXPECT_EQ(transport.state(), BusState::kUp);
+  inject(CAN_ERR_CRTL, CAN_ERR_CRTL_TX_PASSIVE);
+  EXPECT_EQ(transport.state(), BusState::kErrorPassive);
+  inject(CAN_ERR_CRTL, CAN_ERR_CRTL_ACTIVE);
+  EXPECT_EQ(transport.state(), BusState::kUp);
+  close(fd);
+  EXPECT_EQ(transport.counters().error_frames, 5u);
+  EXPECT_TRUE(got.empty());
+}
+
+TEST(TransportVcan, ReadsWhetherTheInterfaceCarriesCanFd) {
+  RIG_REQUIRE_VCAN();
+  ASSERT_EQ(sh("ip link add dev rigclassic0 type vcan && ip link set rigclassic0 mtu 16 && "
+               "ip link set up dev rigclassic0"),
+            0);
+  {
+    can::transport::SocketCanTransport classic(settings_for("rigclassic0"));
+    EXPECT_FALSE(classic.fd_capable());
+    can::transport::SocketCanTransport fd(settings_for("vcan0"));
+    EXPECT_TRUE(fd.fd_capable());
+  }
+  sh("ip link del dev rigclassic0");
 }
 
 TEST(TransportVcan, KernelFilterPassesOnlyConfiguredIds) {
