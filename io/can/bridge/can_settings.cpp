@@ -1,6 +1,7 @@
 #include "io/can/bridge/can_settings.h"
 
 #include "io/can/bridge/can_bridge.h"
+#include "io/can/bridge/can_fallback_io.h"
 #include "io/can/dbc/dbc_parser.h"
 
 namespace rig::io::can::bridge {
@@ -19,7 +20,7 @@ CanSettings read_can_settings(config::StrictTable& can_table) {
   return s;
 }
 
-std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings, const io::InputSet& feeds) {
+can::mapping::CanConfig load_can_files(const CanSettings& settings) {
   can::mapping::CanConfig config;
   if (settings.dbc_file) {
     config.database = dbc::load_dbc(*settings.dbc_file);
@@ -31,11 +32,31 @@ std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings, const io::
   } else {
     config = can::mapping::load_can_config(settings.mapping_file);
   }
+  return config;
+}
+
+std::unique_ptr<io::CycleIo> make_can_io(can::mapping::CanConfig config,
+                                         const CanSettings& settings, const io::InputSet& feeds) {
   can::transport::TransportSettings transport;
   transport.interface = settings.interface;
   transport.fd = settings.fd;
   return std::make_unique<CanBridge>(std::move(config), std::move(transport),
                                      settings.kernel_filter, feeds);
+}
+
+std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings, const io::InputSet& feeds) {
+  return make_can_io(load_can_files(settings), settings, feeds);
+}
+
+std::unique_ptr<io::CycleIo> make_can_fallback_io(const can::mapping::CanConfig& config,
+                                                  const io::InputSet& feeds) {
+  std::vector<CanFallbackIo::Fallback> fallbacks;
+  for (const auto& message : config.mapping.rx) {
+    for (const auto& s : message.signals) {
+      if (s.model && feeds[model::index(*s.model)]) fallbacks.push_back({*s.model, s.fallback});
+    }
+  }
+  return std::make_unique<CanFallbackIo>(std::move(fallbacks));
 }
 
 }  // namespace rig::io::can::bridge

@@ -40,7 +40,9 @@
 /// byte of the message except those of the checksum signal; the checksum signal must be 8 bits.
 /// The alive counter must advance by 1..max_step (mod modulus) per frame; a frozen or jumping
 /// counter is a failure. Every name is checked against the DBC and model/signals.h, and every
-/// error is config::ConfigError("file:line: ...").
+/// error is config::ConfigError("file:line: ..."). Contradictions are errors too: counter and
+/// checksum sharing bits, a checksum byte listed twice, `convert` with `scale`, `model` with
+/// `constant`, one message both received and sent.
 
 #include <cstdint>
 #include <filesystem>
