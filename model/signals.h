@@ -108,8 +108,8 @@ constexpr std::optional<Signal> signal_by_name(std::string_view name) {
 /// The values an input may take: what a source (driver table, CAN) may ask of the model.
 /// Beyond them a request is impossible (a pedal past 1, a negative pressure, half a gear).
 struct InputRange {
-  double min;
-  double max;
+  double min = 0.0;
+  double max = 0.0;
   bool whole = false;  ///< whole numbers only (the gear request; 99 = automatic)
 };
 constexpr InputRange input_range(Signal s) {

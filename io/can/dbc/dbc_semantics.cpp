@@ -12,7 +12,7 @@
 namespace rig::io::can::dbc {
 namespace {
 
-constexpr std::size_t kMaxBits = 64 * 8;
+constexpr std::size_t kMaxBits = std::size_t{64} * 8;
 constexpr int kFree = -1;
 
 /// Per bit of a frame: the index of the signal that holds it, or kFree.
