@@ -105,6 +105,33 @@ constexpr std::optional<Signal> signal_by_name(std::string_view name) {
   return std::nullopt;
 }
 
+/// The values an input may take: what a source (driver table, CAN) may ask of the model.
+/// Beyond them a request is impossible (a pedal past 1, a negative pressure, half a gear).
+struct InputRange {
+  double min = 0.0;
+  double max = 0.0;
+  bool whole = false;  ///< whole numbers only (the gear request; 99 = automatic)
+};
+constexpr InputRange input_range(Signal s) {
+  switch (s) {
+    case Signal::kSteeringWheelAngleCmd:
+      return {-20.0, 20.0};  // +-3.2 turns [rad]
+    case Signal::kSteeringWheelTorqueCmd:
+      return {-200.0, 200.0};
+    case Signal::kAssistTorque:
+      return {-1e4, 1e4};
+    case Signal::kThrottlePedal:
+      return {0.0, 1.0};
+    case Signal::kBrakePressureFront:
+    case Signal::kBrakePressureRear:
+      return {0.0, 3e7};  // 300 bar
+    case Signal::kGearRequest:
+      return {-1.0, 99.0, true};
+    default:
+      return {0.0, 0.0};  // outputs: no source sets them
+  }
+}
+
 /// The values of all signals, their validity and (for inputs) their source. Plain data: copied
 /// by value into snapshots, never allocates.
 struct Signals {

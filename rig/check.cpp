@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cctype>
+#include <iostream>
 #include <ostream>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "io/config/input_file.h"
 #include "io/config/strict_table.h"
 #include "io/config/vehicle_file.h"
+#include "io/lcm/lcm_settings.h"
 #include "rig/config.h"
 #include "rig/sinks.h"
 
@@ -42,6 +44,9 @@ bool is_run_config(const FileContent& c) {
 
 void check_run_config(const FileContent& c, std::ostream& notes) {
   const RigConfig config = load_config(c.path);
+  // The warnings `rig run` gives, on stderr as there (make_io adds the DBC's and CAN's).
+  if (const std::string warning = io::lcm::lcm_url_warning(config.lcm.url); !warning.empty())
+    std::cerr << warning << "\n";
   RunOptions options;
   options.config_file = c.path.string();
   try {

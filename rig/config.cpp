@@ -8,6 +8,7 @@
 
 #include "io/config/config_error.h"
 #include "io/config/strict_table.h"
+#include "rig/rt/thread_setup.h"
 
 namespace rig {
 namespace {
@@ -61,12 +62,16 @@ RigSettings read_rig(io::config::StrictTable& t) {
                   s.duration_s, s.period_s);
     throw t.error("duration_s", text);
   }
-  s.priority = static_cast<int>(t.number_in("priority", 80, 1, 99));
-  s.cpu = static_cast<int>(t.number_in("cpu", -1, -1, 1023));
+  s.priority = static_cast<int>(t.integer_in("priority", 80, 1, 99));
+  s.cpu = static_cast<int>(t.integer_in("cpu", -1, -1, 1023));
+  if (s.cpu >= rt::cpu_count())
+    throw t.error("cpu", "CPU " + std::to_string(s.cpu) + " does not exist: this machine has " +
+                             std::to_string(rt::cpu_count()) + " (0.." +
+                             std::to_string(rt::cpu_count() - 1) + "; -1: no pinning)");
   const std::string policy =
       t.choice("overrun_policy", "skip", {"skip", "catch-up", "abort-after"});
   s.policy = *overrun_policy_by_key(policy);
-  s.abort_after = static_cast<int>(t.number_in("abort_after", 10, 1, 1e6));
+  s.abort_after = static_cast<int>(t.integer_in("abort_after", 10, 1, 1000000));
   s.status_interval_s = t.number_in("status_interval_s", 5.0, 0.1, 3600.0);
   s.keep_logs = static_cast<int>(t.integer("keep_logs", s.keep_logs));
   if (s.keep_logs < 0 || s.keep_logs > kMaxKeepLogs)
@@ -142,6 +147,21 @@ io::InputSet driver_writes(const RigConfig& c) {
   return {};
 }
 
+/// Where each input routed to CAN is; without a [can] section such a route is an error (the
+/// input would never be written).
+void locate_can_routes(const io::config::StrictTable& routing, const RoutingRequests& requests,
+                       RigConfig& c) {
+  for (std::size_t i = 0; i < requests.size(); ++i) {
+    if (requests[i] != RouteRequest::kCan) continue;
+    const std::string name(model::kSignalTable[i].name);
+    if (!c.can)
+      throw routing.error(name,
+                          "routed to \"can\", but there is no [can] section (no mapping "
+                          "receives it; add [can] or route it to \"driver\")");
+    c.can_route_at[i] = routing.location(name);
+  }
+}
+
 }  // namespace
 
 RigConfig load_config(const std::filesystem::path& file) {
@@ -153,9 +173,11 @@ RigConfig load_config(const std::filesystem::path& file) {
   if (auto t = top.optional_table("model")) c.model = read_model(*t);
   // Routing before the driver: a table column must not be routed to CAN.
   RoutingRequests requests{};
-  if (auto t = top.optional_table("routing")) requests = read_routing(*t);
+  std::optional<io::config::StrictTable> routing = top.optional_table("routing");
+  if (routing) requests = read_routing(*routing);
   if (auto t = top.optional_table("driver")) read_driver(*t, requests, c);
   if (auto t = top.optional_table("can")) c.can = io::can::bridge::read_can_settings(*t);
+  if (routing) locate_can_routes(*routing, requests, c);
   if (auto t = top.optional_table("lcm")) c.lcm = io::lcm::read_lcm_settings(*t);
   top.finish();  // unknown top-level sections
   c.routing = resolve_routing(requests, driver_writes(c));

@@ -4,6 +4,7 @@
 /// is read by its owner's function; unknown sections and keys are ConfigErrors with file:line.
 /// The routing is resolved here, once, from [routing] and the [driver] (rig/routing.h).
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -63,6 +64,9 @@ struct RigConfig {
   Routing routing;
   io::lcm::LcmSettings lcm;  ///< [lcm] (optional): URL, channel prefix, rates
   std::optional<io::can::bridge::CanSettings> can;  ///< [can], read by io/can's read_can_settings
+  /// `file:line` of each [routing] entry `= "can"` ("" for the others), for errors found when
+  /// the mapping is loaded (an input routed to CAN that no [[rx]] signal receives).
+  std::array<std::string, model::kSignalCount> can_route_at{};
 };
 
 /// Loads and validates a configuration file. Throws ConfigError("file:line: ...").

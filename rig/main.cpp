@@ -13,7 +13,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "io/lcm/lcm_settings.h"
 #include "rig/check.h"
+#include "rig/rt/thread_setup.h"
 #include "rig/run.h"
 #include "rig/signals.h"
 
@@ -27,6 +29,29 @@ int check(const std::vector<std::string>& files, const std::string& kind_name) {
     code = std::max(code, rig::check_file(file, kind, std::cout, std::cerr));
   }
   return code;
+}
+
+/// --lcm-url: "none" or a well-formed LCM URL (io/lcm/lcm_settings.h, as [lcm] url).
+CLI::Validator lcm_url_validator() {
+  return CLI::Validator(
+      [](const std::string& url) {
+        return url == "none" ? std::string() : rig::io::lcm::lcm_url_problem(url);
+      },
+      "URL");
+}
+
+/// --cpu: a CPU this machine has (as [rig] cpu).
+CLI::Validator cpu_validator() {
+  return CLI::Validator(
+      [](const std::string& text) {
+        const int n = rig::rt::cpu_count();
+        int cpu = -1;
+        if (!CLI::detail::lexical_cast(text, cpu) || cpu < 0 || cpu >= n)
+          return "CPU " + text + " does not exist: this machine has " + std::to_string(n) +
+                 " (0.." + std::to_string(n - 1) + ")";
+        return std::string();
+      },
+      "CPU");
 }
 
 }  // namespace
@@ -46,14 +71,15 @@ int main(int argc, char** argv) {
                       "least one period");
   run_cmd->add_flag("--offline", run.offline, "no sleeping, as fast as possible, deterministic");
   run_cmd->add_option("--can", run.can, "CAN interface, or 'none'");
-  run_cmd->add_option("--lcm-url", run.lcm_url, "LCM URL, or 'none'");
+  run_cmd->add_option("--lcm-url", run.lcm_url, "LCM URL, or 'none'")->check(lcm_url_validator());
   run_cmd->add_option("--lcm-log", run.lcm_log, "write an LCM event log to FILE");
   run_cmd->add_option("--overrun-log", run.overrun_log,
                       "JSON-lines log of deadline misses and events");
   run_cmd->add_option("--summary-json", run.summary_json, "write the summary as JSON to FILE");
-  run_cmd->add_option("--cpu", run.cpu, "pin the loop thread to CPU N")->check(CLI::Range(0, 1023));
+  run_cmd->add_option("--cpu", run.cpu, "pin the loop thread to CPU N")->check(cpu_validator());
   run_cmd->add_option("--priority", run.priority, "SCHED_FIFO priority")->check(CLI::Range(1, 99));
-  run_cmd->add_flag("--require-rt", run.require_rt, "fail if SCHED_FIFO or mlockall is refused");
+  run_cmd->add_flag("--require-rt", run.require_rt,
+                    "fail if SCHED_FIFO, mlockall or the CPU pinning is refused");
   run_cmd->add_option("--inject-stall", stall, "test hook: CYCLE:MS")->group("");
 
   std::vector<std::string> check_files;

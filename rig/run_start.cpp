@@ -18,13 +18,15 @@ void stop_before_start(Executive& exec) {
 bool report_rt_outcome(const Executive& exec, EventLog& log, const ExecutiveParams& params,
                        const RunOptions& options, const rt::SetupResult& dma, rt::Clock& wall) {
   const io::RunInfo& info = exec.run_info();
+  const bool pinned = params.cpu < 0 || info.cpu == params.cpu;  // --cpu / [rig] cpu
   log.event(wall.realtime_ns(), wall.now_ns(), "cpu_dma_latency",
             dma.ok ? "held at 0 us" : "not available (no permission)");
-  const std::string rt = std::string("SCHED_FIFO ") + (info.sched_fifo ? "granted" : "REFUSED") +
-                         " (priority " + std::to_string(params.priority) + "), mlockall " +
-                         (info.memory_locked ? "granted" : "REFUSED") + ", cpu " +
-                         std::to_string(info.cpu);
-  const bool rt_ok = info.sched_fifo && info.memory_locked;
+  const std::string rt =
+      std::string("SCHED_FIFO ") + (info.sched_fifo ? "granted" : "REFUSED") + " (priority " +
+      std::to_string(params.priority) + "), mlockall " +
+      (info.memory_locked ? "granted" : "REFUSED") + ", cpu " + std::to_string(info.cpu) +
+      (pinned ? "" : " (pinning to CPU " + std::to_string(params.cpu) + " REFUSED)");
+  const bool rt_ok = info.sched_fifo && info.memory_locked && pinned;
   log.event(wall.realtime_ns(), wall.now_ns(), rt_ok ? "rt_granted" : "rt_refused", rt);
   if (!rt_ok) {
     std::cerr << "rig: warning: real-time settings refused: " << rt << " (" << exec.rt_problems()

@@ -14,7 +14,10 @@
 
 namespace rig {
 
-/// CycleIo adapters. `--can none` or no [can] section: none. Throws ConfigError / runtime_error.
+/// CycleIo adapters. With [can]: loads the DBC and the mapping (their warnings on stderr, every
+/// input routed to CAN must be received) and opens the bridge; `--can none` then gives one
+/// warning line and the fallback adapter (those inputs at their mapping fallback, invalid).
+/// Without [can]: none, and `--can IFACE` is an error. Throws ConfigError / runtime_error.
 std::vector<std::unique_ptr<io::CycleIo>> make_io(const RigConfig& config,
                                                   const RunOptions& options);
 

@@ -38,6 +38,14 @@ CombinationModelSettings read_combination_model(StrictTable& m) {
     const double height = j.number_in("height_m", 0.05, 5);
     const auto& a = c.units[i];
     const auto& b = c.units[i + 1];
+    // A coupling pulls the trailing unit from ahead of its axles, and sits behind the leading
+    // unit's front axle.
+    if (!(leading_x < a.axles.front().position_x_m))
+      throw j.error("leading_x_m", "must lie behind the leading unit's front axle (x = " +
+                                       std::to_string(a.axles.front().position_x_m) + " m)");
+    if (!(trailing_x > b.axles.front().position_x_m))
+      throw j.error("trailing_x_m", "must lie ahead of the trailing unit's front axle (x = " +
+                                        std::to_string(b.axles.front().position_x_m) + " m)");
     JointParams p;
     p.kind = kind;
     p.leading_point_m = {leading_x, 0, height - a.chassis.cg_height_m};

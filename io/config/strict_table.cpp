@@ -33,8 +33,19 @@ ConfigError StrictTable::error(std::string_view key, std::string_view what) cons
                      std::string(what));
 }
 
+std::string StrictTable::location(std::string_view key) const {
+  const toml::node* node = table_->get(key);
+  return where(node != nullptr ? node->source() : table_->source());
+}
+
 ConfigError StrictTable::error(std::string_view what) const {
   return ConfigError(where(table_->source()) + ": " + context_ + ": " + std::string(what));
+}
+
+ConfigError StrictTable::error_at(const toml::node& node, std::string_view key,
+                                  std::string_view what) const {
+  return ConfigError(where(node.source()) + ": " + context_ + " " + std::string(key) + ": " +
+                     std::string(what));
 }
 
 bool StrictTable::has(std::string_view key) const { return table_->contains(key); }
@@ -79,6 +90,27 @@ long long StrictTable::integer(std::string_view key) {
 
 long long StrictTable::integer(std::string_view key, long long fallback) {
   return has(key) ? integer(key) : fallback;
+}
+
+long long StrictTable::integer_in(std::string_view key, long long min, long long max) {
+  const toml::node& node = require(key);
+  const auto i = node.value_exact<int64_t>();
+  if (!i) {
+    std::ostringstream msg;
+    msg << "expected an integer";
+    if (const auto f = node.value_exact<double>()) msg << ", not " << *f << " (a float)";
+    throw error(key, msg.str());
+  }
+  if (*i < min || *i > max) {
+    throw error(key, "value " + std::to_string(*i) + " out of range [" + std::to_string(min) +
+                         ", " + std::to_string(max) + "]");
+  }
+  return *i;
+}
+
+long long StrictTable::integer_in(std::string_view key, long long fallback, long long min,
+                                  long long max) {
+  return has(key) ? integer_in(key, min, max) : fallback;
 }
 
 bool StrictTable::boolean(std::string_view key, bool fallback) {
@@ -143,6 +175,21 @@ std::vector<double> StrictTable::numbers(std::string_view key, std::size_t max_e
     } else {
       throw error(key, "expected an array of numbers");
     }
+  }
+  return out;
+}
+
+std::vector<long long> StrictTable::integers(std::string_view key, std::size_t max_entries) {
+  const toml::node& node = require(key);
+  const toml::array* arr = node.as_array();
+  if (arr == nullptr) throw error(key, "expected an array of integers");
+  check_length(key, *arr, max_entries);
+  std::vector<long long> out;
+  out.reserve(arr->size());
+  for (const toml::node& element : *arr) {
+    const auto i = element.value_exact<int64_t>();
+    if (!i) throw error_at(element, key, "expected an array of integers");
+    out.push_back(*i);
   }
   return out;
 }

@@ -38,6 +38,11 @@ class StrictTable {
   [[nodiscard]] double number_in(std::string_view key, double fallback, double min, double max);
   [[nodiscard]] long long integer(std::string_view key);
   [[nodiscard]] long long integer(std::string_view key, long long fallback);
+  /// An integer that must lie in [min, max]. Every integer key is read so: a float (`80.7`, also
+  /// `80.0`) is an error, never truncated.
+  [[nodiscard]] long long integer_in(std::string_view key, long long min, long long max);
+  [[nodiscard]] long long integer_in(std::string_view key, long long fallback, long long min,
+                                     long long max);
   [[nodiscard]] bool boolean(std::string_view key, bool fallback);
   [[nodiscard]] std::string string(std::string_view key);
   [[nodiscard]] std::string string(std::string_view key, std::string_view fallback);
@@ -50,6 +55,9 @@ class StrictTable {
   /// found before any entry is read.
   [[nodiscard]] std::vector<double> numbers(std::string_view key,
                                             std::size_t max_entries = kMaxListEntries);
+  /// An array of integers (a float element is an error, as for integer_in).
+  [[nodiscard]] std::vector<long long> integers(std::string_view key,
+                                                std::size_t max_entries = kMaxListEntries);
   /// An array of rows of `columns` numbers each, e.g. [[x, y, z], ...].
   [[nodiscard]] std::vector<std::vector<double>> number_rows(
       std::string_view key, std::size_t columns, std::size_t max_entries = kMaxListEntries);
@@ -69,6 +77,12 @@ class StrictTable {
   [[nodiscard]] ConfigError error(std::string_view key, std::string_view what) const;
   /// An error located at the table.
   [[nodiscard]] ConfigError error(std::string_view what) const;
+  /// An error located at `node` (an element of one of this table's arrays, e.g. a row).
+  [[nodiscard]] ConfigError error_at(const toml::node& node, std::string_view key,
+                                     std::string_view what) const;
+
+  /// `file:line` of `key` (of the table if the key is absent), for messages raised later.
+  [[nodiscard]] std::string location(std::string_view key) const;
 
   [[nodiscard]] const std::filesystem::path& file() const { return file_; }
   [[nodiscard]] const std::string& context() const { return context_; }

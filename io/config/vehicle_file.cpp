@@ -32,7 +32,26 @@ TmeasyCurve read_curve(StrictTable t) {
   t.finish();
   if (c.slide_slip <= c.max_slip) throw t.error("slip_at_sliding must exceed slip_at_max");
   if (c.slide_force_n > c.max_force_n) throw t.error("sliding_force_n must not exceed max_force_n");
+  // F(s) of eq. (14) starts with its steepest slope: dF0 above the secant F_M / s_M.
+  if (!(c.initial_slope_n * c.max_slip > c.max_force_n))
+    throw t.error("initial_slope_n",
+                  "must exceed max_force_n / slip_at_max (the secant to the "
+                  "maximum; the curve starts with its steepest slope)");
   return c;
+}
+
+/// The characteristic at 2 F_zN against the one at F_zN: the force levels grow with the load,
+/// at most in proportion (the degressive load dependency of eq. 16).
+void check_load_dependency(StrictTable& t, const char* nominal_key, const char* double_key,
+                           const TmeasyCurve& n, const TmeasyCurve& d) {
+  const auto check = [&](double at_nominal, double at_double, const char* key) {
+    if (!(at_double > at_nominal && at_double <= 2 * at_nominal))
+      throw t.error(double_key, std::string(key) + " must exceed that of [" + nominal_key +
+                                    "] and be at most twice it (forces grow with the load, "
+                                    "degressively)");
+  };
+  check(n.max_force_n, d.max_force_n, "max_force_n");
+  check(n.slide_force_n, d.slide_force_n, "sliding_force_n");
 }
 
 /// The optional pneumatic trail tables (model::tire::TmeasyTrail; absent: its defaults):
@@ -64,6 +83,10 @@ TireParams read_tire(StrictTable t) {
   p.longitudinal.at_double = read_curve(t.table("longitudinal_double"));
   p.lateral.at_nominal = read_curve(t.table("lateral_nominal"));
   p.lateral.at_double = read_curve(t.table("lateral_double"));
+  check_load_dependency(t, "longitudinal_nominal", "longitudinal_double", p.longitudinal.at_nominal,
+                        p.longitudinal.at_double);
+  check_load_dependency(t, "lateral_nominal", "lateral_double", p.lateral.at_nominal,
+                        p.lateral.at_double);
   p.longitudinal_stiffness_npm = t.number_in("longitudinal_stiffness_npm", 1e3, 1e8);
   p.longitudinal_damping_nspm = t.number_in("longitudinal_damping_nspm", 1, 1e6);
   p.lateral_stiffness_npm = t.number_in("lateral_stiffness_npm", 1e3, 1e8);
@@ -93,8 +116,8 @@ model::vehicle::AxleKinematicsParams read_kinematics(StrictTable t) {
   if (auto g = t.optional_table("grid")) {
     k.grid.z_min = g->number_in("z_min_m", -1, 1);
     k.grid.z_step = g->number_in("z_step_m", 1e-4, 1);
-    k.grid.z_count = static_cast<int>(g->number_in("z_count", 2, 1000));
-    k.grid.u_count = static_cast<int>(g->number_in("u_count", 1, 1, 1000));
+    k.grid.z_count = static_cast<int>(g->integer_in("z_count", 2, 1000));
+    k.grid.u_count = static_cast<int>(g->integer_in("u_count", 1, 1, 1000));
     if (k.grid.u_count > 1) {
       k.grid.u_step = g->number_in("u_step_m", 1e-5, 1);
       k.grid.u_min = -0.5 * k.grid.u_step * (k.grid.u_count - 1);  // symmetric about u = 0
@@ -168,6 +191,19 @@ std::optional<double> read_steering(StrictTable t, model::vehicle::SteeringParam
   return trail_m;
 }
 
+/// Engine speeds that the gear selection can use: idle < shift speeds < maximum, and a
+/// downshift speed below the upshift speeds (else it shifts back and forth).
+void check_shift_speeds(StrictTable& t, const model::vehicle::DrivetrainParams& d) {
+  if (!(d.idle_speed_radps < d.max_speed_radps))
+    throw t.error("max_speed_radps", "must exceed idle_speed_radps");
+  if (!(d.upshift_speed_low_radps <= d.upshift_speed_high_radps))
+    throw t.error("upshift_speed_high_radps", "must not be below upshift_speed_low_radps");
+  if (!(d.downshift_speed_radps < d.upshift_speed_low_radps))
+    throw t.error("downshift_speed_radps", "must be below upshift_speed_low_radps");
+  if (!(d.upshift_speed_high_radps <= d.max_speed_radps))
+    throw t.error("upshift_speed_high_radps", "must not exceed max_speed_radps");
+}
+
 void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
   d.full_load_speed_radps = t.numbers("full_load_speed_radps", kMaxCurvePoints);
   d.full_load_torque_nm = t.numbers("full_load_torque_nm", kMaxCurvePoints);
@@ -175,9 +211,13 @@ void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
       d.full_load_speed_radps.size() != d.full_load_torque_nm.size()) {
     throw t.error("full_load_torque_nm", "needs as many entries as full_load_speed_radps (>= 2)");
   }
-  for (std::size_t i = 1; i < d.full_load_speed_radps.size(); ++i) {
-    if (!(d.full_load_speed_radps[i] > d.full_load_speed_radps[i - 1])) {
-      throw t.error("full_load_speed_radps", "must be strictly increasing");
+  for (std::size_t i = 0; i < d.full_load_speed_radps.size(); ++i) {
+    if (!(d.full_load_speed_radps[i] > (i == 0 ? 0.0 : d.full_load_speed_radps[i - 1])) ||
+        !std::isfinite(d.full_load_speed_radps[i])) {
+      throw t.error("full_load_speed_radps", "must be finite, > 0 and strictly increasing");
+    }
+    if (!(d.full_load_torque_nm[i] >= 0 && d.full_load_torque_nm[i] <= 1e5)) {
+      throw t.error("full_load_torque_nm", "engine torques must lie in [0, 1e5] N m");
     }
   }
   d.drag_torque_nm = t.number_in("drag_torque_nm", 0, 1e4);
@@ -202,6 +242,12 @@ void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
     throw t.error("lockup_speed_ratio_full", "must exceed lockup_speed_ratio_start");
   d.gear_ratios = t.numbers("gear_ratios", kMaxGears);
   if (d.gear_ratios.empty()) throw t.error("gear_ratios", "needs at least one gear");
+  for (std::size_t i = 0; i < d.gear_ratios.size(); ++i) {
+    const double r = d.gear_ratios[i];
+    if (!(r >= 0.1 && r <= 50) || (i > 0 && !(r < d.gear_ratios[i - 1])))
+      throw t.error("gear_ratios",
+                    "ratios must lie in [0.1, 50] and fall strictly from first gear to top gear");
+  }
   d.reverse_ratio = t.number_in("reverse_ratio", 0.1, 50);
   d.final_drive_ratio = t.number_in("final_drive_ratio", 0.1, 50);
   d.efficiency = t.number_in("efficiency", 0.1, 1);
@@ -215,6 +261,7 @@ void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
       t.number_in("upshift_hysteresis_radps", d.upshift_hysteresis_radps, 0, 1000);
   d.shift_dwell_s = t.number_in("shift_dwell_s", 0, 10);
   d.shift_time_s = t.number_in("shift_time_s", d.shift_time_s, 0, 5);
+  check_shift_speeds(t, d);
   if (d.shift_time_s > d.shift_dwell_s)
     throw t.error("shift_time_s", "must not exceed shift_dwell_s (a shift ends before the next)");
   t.finish();
@@ -236,6 +283,31 @@ std::vector<std::array<double, 3>> read_body_points(StrictTable& c) {
   return points;
 }
 
+/// A rigid body's inertia: each principal moment at most the sum of the other two (triangle
+/// inequality), and the x-z block positive definite.
+void check_inertia(StrictTable& c, const std::array<double, 3>& i, double ixz) {
+  static constexpr std::array<const char*, 3> kKeys{"inertia_xx_kgm2", "inertia_yy_kgm2",
+                                                    "inertia_zz_kgm2"};
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (!(i[k] <= i[(k + 1) % 3] + i[(k + 2) % 3]))
+      throw c.error(kKeys[k],
+                    "no rigid body has these inertias: each principal moment must be "
+                    "at most the sum of the other two");
+  }
+  if (!(ixz * ixz < i[0] * i[2]))
+    throw c.error("inertia_xz_kgm2", "must satisfy xz^2 < xx * zz (positive definite)");
+}
+
+/// [[axle]] tables from the front to the rear, each at its own position.
+void check_axle_order(std::vector<StrictTable>& tables, const std::vector<AxleParams>& axles) {
+  for (std::size_t i = 1; i < axles.size(); ++i) {
+    if (!(axles[i].position_x_m < axles[i - 1].position_x_m))
+      throw tables[i].error("position_x_m", "must be below that of the axle before (" +
+                                                std::to_string(axles[i - 1].position_x_m) +
+                                                " m): [[axle]] tables go from front to rear");
+  }
+}
+
 }  // namespace
 
 VehicleParams load_vehicle_file(const std::filesystem::path& file) {
@@ -250,6 +322,7 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file) {
                               c.number_in("inertia_yy_kgm2", 1e-3, 1e8),
                               c.number_in("inertia_zz_kgm2", 1e-3, 1e8)};
     p.chassis.inertia_xz_kgm2 = c.number_in("inertia_xz_kgm2", 0, -1e7, 1e7);
+    check_inertia(c, p.chassis.inertia_kgm2, p.chassis.inertia_xz_kgm2);
     p.chassis.cg_height_m = c.number_in("cg_height_m", 0.05, 5);
     p.chassis.drag_area_m2 = c.number_in("drag_area_m2", 0, 50);
     p.chassis.air_density_kgpm3 = c.number_in("air_density_kgpm3", 1.2, 0, 2);
@@ -266,13 +339,15 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file) {
     tt.finish();
   }
   std::vector<bool> caster_given;
-  for (auto& a : t.tables("axle", model::kMaxWheelsPerUnit / 2)) {
+  std::vector<StrictTable> axle_tables = t.tables("axle", model::kMaxWheelsPerUnit / 2);
+  for (const auto& a : axle_tables) {
     caster_given.push_back(a.has("caster_trail_m"));
-    p.axles.push_back(read_axle(std::move(a), tires));
+    p.axles.push_back(read_axle(a, tires));
   }
   if (p.axles.empty() || p.axles.size() > static_cast<std::size_t>(model::kMaxWheelsPerUnit / 2)) {
     throw t.error("axle", "needs 1 to 6 [[axle]] tables");
   }
+  check_axle_order(axle_tables, p.axles);
   // A trailer (no steered, no driven axle) may leave out [steering] and [drivetrain].
   bool any_steered = false, any_driven = false;
   for (const auto& a : p.axles) {
@@ -313,6 +388,13 @@ VehicleModelSettings read_vehicle_model(StrictTable& m) {
   VehicleModelSettings v;
   v.file = m.existing_path("vehicle");
   v.params = load_vehicle_file(v.file);
+  // Alone on its axles (not in a combination) a vehicle stands only if its CG (x = 0) lies
+  // between the first and the last axle.
+  const auto& axles = v.params.axles;
+  if (axles.size() < 2 || !(axles.front().position_x_m > 0 && axles.back().position_x_m < 0))
+    throw m.error("vehicle", v.file.string() +
+                                 ": a vehicle alone needs axles ahead of and behind its CG "
+                                 "(position_x_m > 0 and < 0); a trailer runs in a combination");
   v.params.road = read_road(m);
   v.initial_speed_mps = m.number_in("initial_speed_mps", 0.0, -100, 100);
   v.params.slip_mask_speed_mps = m.number_in("slip_mask_speed_mps", 0.5, 0, 10);

@@ -26,6 +26,18 @@ struct LcmSettings {
   [[nodiscard]] std::string signals_channel() const { return channel_prefix + "RIG_SIGNALS"; }
 };
 
+/// What is wrong with an LCM URL, "" if nothing: `provider://target?key=value&...` with a
+/// provider LCM knows (udpm, mpudpm, file, memq, tcpq); for udpm a literal IPv4 multicast group
+/// (224.0.0.0/4) with a port 1..65535 (or nothing: LCM's default) and the options ttl (0..255)
+/// and recv_buf_size. A malformed URL is a configuration error, never LCM silently off.
+std::string lcm_url_problem(const std::string& url);
+
+/// The ttl of a udpm/mpudpm URL (0 if it gives none).
+int lcm_url_ttl(const std::string& url);
+
+/// One warning line when the URL lets LCM traffic leave this host (ttl > 0), else "".
+std::string lcm_url_warning(const std::string& url);
+
 /// Reads the [lcm] table (keys url, channel_prefix, state_rate_hz, status_rate_hz,
 /// signals_rate_hz; all optional) and rejects unknown keys (calls finish()). Throws
 /// config::ConfigError with `file:line` on bad values.

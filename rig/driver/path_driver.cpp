@@ -52,7 +52,7 @@ PathDriverParams read_path_driver(io::config::StrictTable& t, const PathDriverVe
   p.speed_step_mps = t.number_in("speed_step_mps", 0.0, -10.0, 10.0);
   p.speed_step_duration_s = t.number_in("speed_step_duration_s", 5.0, 0.1, 1e4);
   p.target_speed_max_mps = t.number_in("target_speed_max_mps", 100.0, 0.0, 100.0);
-  p.gear_request = t.number_in("gear_request", 99.0, -1.0, 99.0);
+  p.gear_request = static_cast<double>(t.integer_in("gear_request", 99, -1, 99));
   if (p.gear_request != std::round(p.gear_request))
     throw t.error("gear_request", "gear_request: need a whole gear number (99: automatic)");
   p.preview_time_s = t.number_in("preview_time_s", p.preview_time_s, 0.05, 10.0);

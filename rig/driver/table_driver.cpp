@@ -1,10 +1,32 @@
 #include "rig/driver/table_driver.h"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <utility>
 
 namespace rig::driver {
+
+namespace {
+
+/// A table value must be finite and within its input's range (model::input_range): an error at
+/// load, never replaced at run time.
+void check_value(const io::config::StrictTable& t, const toml::node& row, const std::string& name,
+                 std::optional<model::Signal> signal, double v) {
+  if (!std::isfinite(v)) throw t.error_at(row, "rows", name + ": value is not finite");
+  if (!signal) return;
+  const model::InputRange r = model::input_range(*signal);
+  if (v < r.min || v > r.max || (r.whole && v != std::floor(v))) {
+    std::ostringstream msg;
+    msg << name << ": " << v << " is outside [" << r.min << ", " << r.max << "]"
+        << (r.whole ? " or not a whole number" : "");
+    throw t.error_at(row, "rows", msg.str());
+  }
+}
+
+}  // namespace
 
 TableDriverParams read_table_driver(io::config::StrictTable& t) {
   TableDriverParams p;
@@ -42,14 +64,17 @@ TableDriverParams read_table_driver(io::config::StrictTable& t) {
   for (const auto& row_node : *rows) {
     const auto* row = row_node.as_array();
     if (row == nullptr || row->size() != names.size())
-      throw t.error(
-          "rows", "every row needs " + std::to_string(names.size()) + " numbers (one per column)");
+      throw t.error_at(
+          row_node, "rows",
+          "every row needs " + std::to_string(names.size()) + " numbers (one per column)");
     for (std::size_t i = 0; i < row->size(); ++i) {
       const auto v = (*row)[i].value<double>();
-      if (!v) throw t.error("rows", "rows must hold numbers");
+      if (!v) throw t.error_at(row_node, "rows", "rows must hold numbers");
+      check_value(t, row_node, names[i], i == 0 ? std::nullopt : std::optional(p.columns[i - 1]),
+                  *v);
       if (i == 0) {
         if (!p.times_s.empty() && *v <= p.times_s.back())
-          throw t.error("rows", "time_s must increase strictly");
+          throw t.error_at(row_node, "rows", "time_s must increase strictly");
         p.times_s.push_back(*v);
       } else {
         p.values.push_back(*v);

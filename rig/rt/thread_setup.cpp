@@ -42,6 +42,11 @@ SetupResult set_cpu_affinity(int cpu) {
   return {true, {}};
 }
 
+int cpu_count() noexcept {
+  const long n = sysconf(_SC_NPROCESSORS_CONF);
+  return n > 0 ? static_cast<int>(n) : 1;
+}
+
 SetupResult set_timer_slack(std::uint64_t slack_ns) {
   if (prctl(PR_SET_TIMERSLACK, static_cast<unsigned long>(slack_ns), 0UL, 0UL, 0UL) != 0)
     return failed("prctl(PR_SET_TIMERSLACK)", errno);

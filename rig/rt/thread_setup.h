@@ -20,6 +20,9 @@ SetupResult lock_memory();
 SetupResult set_sched_fifo(int priority);
 /// Pins the calling thread to `cpu`.
 SetupResult set_cpu_affinity(int cpu);
+/// The CPUs this machine has (configured, online or not; isolated ones included): a CPU index
+/// for set_cpu_affinity must be below it.
+int cpu_count() noexcept;
 /// The calling thread's timer slack (1 ns: absolute sleeps wake on time, not up to 50 us late).
 SetupResult set_timer_slack(std::uint64_t slack_ns);
 

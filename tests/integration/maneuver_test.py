@@ -2,7 +2,8 @@
 """Runs one maneuver file offline through `rig run` and checks physical results from the LCM log.
 
 Usage: maneuver_test.py RIG_BINARY LOG2CSV_BINARY SOURCE_DIR NAME
-NAME is a file of config/maneuvers/ without .toml, "rig" for config/rig.toml (the demo), or
+NAME is a file of config/maneuvers/ without .toml, "rig" for config/rig.toml (the demo),
+"bench" for config/bench.toml (the CAN bench, run until stopped: here 5 s with `--can none`), or
 "combination-FILE" for config/combinations/FILE.toml.
 
 Each run: `rig check` passes, `rig run --offline --lcm-url none --lcm-log F` exits 0 with stop
@@ -27,6 +28,9 @@ import rig_checks  # noqa: E402
 RIG, LOG2CSV, SRC, NAME = sys.argv[1:5]
 COLUMNS = ("sim_time_s", "unit0_", "unit1_", "wheel0_", "steering_", "gear", "num_", "joint0_")
 TMP = tempfile.mkdtemp(prefix=f"rig_maneuver_{NAME}_")
+# Configurations that run until stopped get a duration here.
+DURATION_S = {"bench": "5"}
+STDERR = []  # of the run
 
 
 def check(cond, msg):
@@ -34,8 +38,8 @@ def check(cond, msg):
 
 
 def config_path(name):
-    if name == "rig":
-        return os.path.join(SRC, "config", "rig.toml")
+    if name in ("rig", "bench"):
+        return os.path.join(SRC, "config", name + ".toml")
     if name.startswith("combination-"):
         return os.path.join(SRC, "config", "combinations", name[len("combination-"):] + ".toml")
     return os.path.join(SRC, "config", "maneuvers", name + ".toml")
@@ -46,11 +50,13 @@ def run_offline(config):
     if r.returncode != 0:
         fail(f"rig check: exit {r.returncode}: {r.stdout}{r.stderr}")
     log, summary = f"{TMP}/run.lcm", f"{TMP}/summary.json"
+    duration = ["--duration", DURATION_S[NAME]] if NAME in DURATION_S else []
     r = subprocess.run([RIG, "run", "--config", config, "--offline", "--can", "none", "--lcm-url",
-                        "none", "--lcm-log", log, "--summary-json", summary],
+                        "none", "--lcm-log", log, "--summary-json", summary] + duration,
                        capture_output=True, text=True, timeout=120)
     if r.returncode != 0:
         fail(f"rig run: exit {r.returncode}: {r.stderr[-2000:]}")
+    STDERR.append(r.stderr)
     s = json.load(open(summary))
     check(s["stop_reason"] == "duration", f"stop reason {s['stop_reason']} (no NaN stop)")
     r = subprocess.run([LOG2CSV, log, f"{TMP}/csv"], capture_output=True, text=True, timeout=120)
@@ -134,6 +140,18 @@ def case_rig(s, rows):
     check(creep < 1.0, f"creep on the 10 % grade over 15-20 s: {creep:.3f} mm (< 1 mm)")
     check(all(r["wheel0_brake_torque_nm"] != 0 for r in rows if r["sim_time_s"] > 15),
           "brakes hold the car")
+
+
+def case_bench(s, rows):
+    # The CAN bench offline with --can none: one warning, the assist (routed to CAN) takes its
+    # fallback 0 N m, flagged invalid; the path driver holds the R = 40 m circle at 10 m/s.
+    warnings = [line for line in STDERR[0].splitlines() if "--can none" in line]
+    check(len(warnings) == 1 and "assist_torque_nm" in warnings[0] and "fallback" in warnings[0],
+          f"one --can none warning naming the CAN input: {warnings}")
+    check(s["sim_time_s"] > 4.99, f"ran {s['sim_time_s']} s of the endless bench")
+    end = rows[-1]
+    check(abs(speed(end) - 10.0) < 0.5, f"speed {speed(end):.2f} m/s (target 10)")
+    check(1.8 < abs(end["unit0_ay_mps2"]) < 3.2, f"a_y {end['unit0_ay_mps2']:.2f} m/s^2 (v^2/R 2.5)")
 
 
 def case_double_lane_change_iso3888(s, rows):

@@ -321,6 +321,22 @@ TEST(Config, BadInputGivesFileLine) {
       {"[rig]\nfault_speed_limit_mps = -100\n", "fault_speed_limit_mps: must be", 2},
       {"[rig]\nfault_rate_limit_radps = nan\n", "fault_rate_limit_radps: must be", 2},
       {"[rig]\non_vehicle_fault = \"ignore\"\n", "unknown value 'ignore'", 2},
+      // issue 13: integer keys take integers; a CPU this machine has; driver tables finite and
+      // within the input's range, at the row's line
+      {"[rig]\npriority = 80.7\n", "[rig] priority: expected an integer, not 80.7", 2},
+      {"[rig]\n\nabort_after = 3.0\n", "[rig] abort_after: expected an integer", 3},
+      {"[rig]\ncpu = 100000\n", "out of range", 2},
+      {"[rig]\ncpu = 1023\n", "CPU 1023 does not exist: this machine has", 2},
+      {"[driver]\ncolumns = [\"time_s\", \"throttle_pedal\"]\nrows = [\n[0, 0.5],\n[1, nan]]\n",
+       "[driver] rows: throttle_pedal: value is not finite", 5},
+      {"[driver]\ncolumns = [\"time_s\", \"throttle_pedal\"]\nrows = [[0, 1.01]]\n",
+       "throttle_pedal: 1.01 is outside [0, 1]", 3},
+      {"[driver]\ncolumns = [\"time_s\", \"gear_request\"]\nrows = [\n[0, 1],\n[1, 1.5]]\n",
+       "gear_request: 1.5 is outside [-1, 99] or not a whole number", 5},
+      {"[driver]\ncolumns = [\"time_s\", \"brake_pressure_rear_pa\"]\nrows = [[-inf, 0]]\n",
+       "time_s: value is not finite", 3},
+      {"[lcm]\nurl = \"udpm://239.255.76.67:7667?ttl=x\"\n", "[lcm] url: ttl 'x' is not in 0..255",
+       2},
   };
   for (const auto& c : cases) {
     const auto file = temp_path("bad.toml");

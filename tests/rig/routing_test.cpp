@@ -69,10 +69,12 @@ TEST(Routing, AssistFromCanIsTheEcusTorque) {
 }
 
 TEST(Routing, ResolvedOnceFromTheConfigurationFile) {
-  const RigConfig c = load_text("path.toml",
-                                "[routing]\nassist_torque_nm = \"can\"\n"
-                                "brake_pressure_rear_pa = \"can\"\n"
-                                "[driver]\nkind = \"path\"\n");
+  const RigConfig c =
+      load_text("path.toml",
+                "[routing]\nassist_torque_nm = \"can\"\n"
+                "brake_pressure_rear_pa = \"can\"\n"
+                "[driver]\nkind = \"path\"\n"
+                "[can]\nmapping = \"" RIG_SOURCE_DIR "/config/can/steering-bench.toml\"\n");
   EXPECT_TRUE(c.routing.assist_from_input);
   EXPECT_EQ(c.routing.can_inputs, set_of({Signal::kAssistTorque, Signal::kBrakePressureRear}));
   EXPECT_EQ(c.routing.driver_inputs, set_of({Signal::kSteeringWheelAngleCmd, Signal::kThrottlePedal,
@@ -87,6 +89,28 @@ TEST(Routing, ResolvedOnceFromTheConfigurationFile) {
   EXPECT_GT(s[Signal::kBrakePressureFront], 0.0);
   EXPECT_DOUBLE_EQ(s[Signal::kBrakePressureRear], -3.0);
   EXPECT_DOUBLE_EQ(s[Signal::kGearRequest], 99.0);
+}
+
+// Without a [can] section nothing writes an input routed to CAN (issue 13: the front brakes
+// were never applied): an error at its [routing] line.
+TEST(Routing, CanRouteNeedsACanSection) {
+  try {
+    (void)load_text("no_can.toml", "[routing]\n\nbrake_pressure_front_pa = \"can\"\n");
+    ADD_FAILURE() << "no error";
+  } catch (const io::config::ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(":3: [routing] brake_pressure_front_pa: routed to \"can\", but there is "
+                        "no [can] section"),
+              std::string::npos)
+        << what;
+  }
+  const RigConfig c =
+      load_text("with_can.toml",
+                "[routing]\n\nbrake_pressure_front_pa = \"can\"\n"
+                "[can]\nmapping = \"" RIG_SOURCE_DIR "/config/can/steering-bench.toml\"\n");
+  EXPECT_NE(c.can_route_at[idx(Signal::kBrakePressureFront)].find("with_can.toml:3"),
+            std::string::npos);
+  EXPECT_TRUE(c.can_route_at[idx(Signal::kThrottlePedal)].empty());
 }
 
 TEST(Routing, TableColumnsAreTheDriversAndMustNotBeRoutedToCan) {

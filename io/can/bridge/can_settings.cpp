@@ -1,26 +1,11 @@
 #include "io/can/bridge/can_settings.h"
 
 #include "io/can/bridge/can_bridge.h"
+#include "io/can/bridge/can_fallback_io.h"
 #include "io/can/dbc/dbc_parser.h"
 
 namespace rig::io::can::bridge {
 namespace {
-
-/// DBC and mapping as `settings` name them ([can] dbc overrides the mapping's `dbc`).
-can::mapping::CanConfig load_mapping(const CanSettings& settings) {
-  can::mapping::CanConfig config;
-  if (settings.dbc_file) {
-    config.database = dbc::load_dbc(*settings.dbc_file);
-    toml::table root = config::load_toml_file(settings.mapping_file);
-    config::StrictTable table(root, settings.mapping_file, "mapping");
-    (void)table.string("dbc", "");  // superseded by [can] dbc
-    config.mapping = can::mapping::parse_can_mapping(table, config.database);
-    table.finish();
-  } else {
-    config = can::mapping::load_can_config(settings.mapping_file);
-  }
-  return config;
-}
 
 /// The first mapped message (RX or TX) that is a CAN FD frame, or nullptr.
 const dbc::MessageDef* first_fd_message(const can::mapping::CanConfig& config) {
@@ -47,7 +32,7 @@ CanSettings read_can_settings(config::StrictTable& can_table) {
   s.kernel_filter = can_table.boolean("kernel_filter", false);
   if (!s.fd) {
     // A classic-only socket would drop every frame of an FD message without a word.
-    if (const dbc::MessageDef* m = first_fd_message(load_mapping(s))) {
+    if (const dbc::MessageDef* m = first_fd_message(load_can_files(s))) {
       throw can_table.error("fd", "false, but message " + m->name + " (" +
                                       std::to_string(m->length_bytes) + " bytes) of " +
                                       s.mapping_file.string() + " is a CAN FD frame");
@@ -57,8 +42,23 @@ CanSettings read_can_settings(config::StrictTable& can_table) {
   return s;
 }
 
-std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings, const io::InputSet& feeds) {
-  can::mapping::CanConfig config = load_mapping(settings);
+can::mapping::CanConfig load_can_files(const CanSettings& settings) {
+  can::mapping::CanConfig config;
+  if (settings.dbc_file) {
+    config.database = dbc::load_dbc(*settings.dbc_file);
+    toml::table root = config::load_toml_file(settings.mapping_file);
+    config::StrictTable table(root, settings.mapping_file, "mapping");
+    (void)table.string("dbc", "");  // superseded by [can] dbc
+    config.mapping = can::mapping::parse_can_mapping(table, config.database);
+    table.finish();
+  } else {
+    config = can::mapping::load_can_config(settings.mapping_file);
+  }
+  return config;
+}
+
+std::unique_ptr<io::CycleIo> make_can_io(can::mapping::CanConfig config,
+                                         const CanSettings& settings, const io::InputSet& feeds) {
   const dbc::MessageDef* fd_message = first_fd_message(config);
   const std::string fd_name = fd_message != nullptr ? fd_message->name : "";
   const std::uint32_t fd_bytes = fd_message != nullptr ? fd_message->length_bytes : 0;
@@ -75,6 +75,21 @@ std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings, const io::
                               settings.interface + " mtu 72`, or map classic messages only)");
   }
   return bridge;
+}
+
+std::unique_ptr<io::CycleIo> make_can_io(const CanSettings& settings, const io::InputSet& feeds) {
+  return make_can_io(load_can_files(settings), settings, feeds);
+}
+
+std::unique_ptr<io::CycleIo> make_can_fallback_io(const can::mapping::CanConfig& config,
+                                                  const io::InputSet& feeds) {
+  std::vector<CanFallbackIo::Fallback> fallbacks;
+  for (const auto& message : config.mapping.rx) {
+    for (const auto& s : message.signals) {
+      if (s.model && feeds[model::index(*s.model)]) fallbacks.push_back({*s.model, s.fallback});
+    }
+  }
+  return std::make_unique<CanFallbackIo>(std::move(fallbacks));
 }
 
 }  // namespace rig::io::can::bridge

@@ -19,6 +19,7 @@
 #include <optional>
 #include <string>
 
+#include "io/can/mapping/can_mapping.h"
 #include "io/config/strict_table.h"
 #include "io/cycle_io.h"
 
@@ -35,6 +36,19 @@ struct CanSettings {
 /// Reads a [can] table (load time; config::ConfigError with file:line on bad input). Calls
 /// finish().
 CanSettings read_can_settings(config::StrictTable& can_table);
+
+/// Loads the DBC and the mapping of `settings` (load time; config::ConfigError on bad input).
+/// The DBC's notes (skipped sections) are in the result's database.warnings.
+can::mapping::CanConfig load_can_files(const CanSettings& settings);
+
+/// The bridge on loaded files: opens the transport; it writes the inputs in `feeds`.
+std::unique_ptr<io::CycleIo> make_can_io(can::mapping::CanConfig config,
+                                         const CanSettings& settings, const io::InputSet& feeds);
+
+/// CAN switched off (`--can none`) on a configuration with [can]: writes each input in `feeds`
+/// that the mapping receives as its `fallback`, flagged invalid, every cycle; sends nothing.
+std::unique_ptr<io::CycleIo> make_can_fallback_io(const can::mapping::CanConfig& config,
+                                                  const io::InputSet& feeds);
 
 /// Loads DBC and mapping, opens the transport; the bridge writes the inputs in `feeds` (those
 /// routed to CAN). Throws config::ConfigError (bad DBC/mapping; an FD message mapped on an

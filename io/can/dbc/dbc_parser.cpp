@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "io/can/dbc/dbc_semantics.h"
 #include "io/config/input_file.h"
 
 namespace rig::io::can::dbc {
@@ -672,7 +673,9 @@ class Parser {
 }  // namespace
 
 Database parse_dbc(std::string_view text, std::string_view file_name) {
-  return Parser(text, file_name).run();
+  Database db = Parser(text, file_name).run();
+  check_semantics(db);
+  return db;
 }
 
 Database load_dbc(const std::filesystem::path& file) {

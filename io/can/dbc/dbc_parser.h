@@ -11,8 +11,10 @@
 ///
 /// Errors throw io::config::ConfigError("file:line: what is wrong"), e.g. a bad BO_ or SG_, a
 /// number that does not parse, an unterminated string, a duplicate message id, a signal that does
-/// not fit in its message. Hostile input is safe: no recursion, bounded work per byte, sizes
-/// checked before use (the parser is fuzzed by tests/fuzz/dbc_fuzzer.cpp).
+/// not fit in its message; then the meaning (dbc_semantics.h: CAN FD lengths, overlapping
+/// signals, unreachable multiplexer values, inverted ranges). Hostile input is safe: no recursion,
+/// bounded work per byte, sizes checked before use (the parser is fuzzed by
+/// tests/fuzz/dbc_fuzzer.cpp).
 
 #include <filesystem>
 #include <string_view>

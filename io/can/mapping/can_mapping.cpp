@@ -1,5 +1,7 @@
 #include "io/can/mapping/can_mapping.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -40,17 +42,34 @@ double named_scale(config::StrictTable& t) {
   return 1.0;
 }
 
+/// The bits a signal occupies in a frame, as a 64-byte mask.
+std::array<std::uint8_t, 64> bit_mask(const dbc::SignalDef& s) {
+  std::array<std::uint8_t, 64> mask{};
+  dbc::SignalCodec(s).insert_raw(~std::uint64_t{0}, mask.data());
+  return mask;
+}
+
+bool share_bits(const dbc::SignalDef& a, const dbc::SignalDef& b) {
+  const auto ma = bit_mask(a);
+  const auto mb = bit_mask(b);
+  for (std::size_t i = 0; i < ma.size(); ++i) {
+    if ((ma[i] & mb[i]) != 0) return true;
+  }
+  return false;
+}
+
 CounterSpec parse_counter(config::StrictTable t, const dbc::MessageDef& m) {
   CounterSpec c;
   c.dbc_signal = signal_index(t, "signal", m);
   const auto& s = m.signals[c.dbc_signal];
   const double max_modulus =
       s.length_bits >= 32 ? 4294967295.0 : std::ldexp(1.0, static_cast<int>(s.length_bits));
-  if (s.value_type != dbc::ValueType::kInteger)
-    throw t.error("signal", "counter must be an integer signal");
-  c.modulus = static_cast<std::uint32_t>(t.number_in("modulus", 2.0, max_modulus));
-  c.max_step = static_cast<std::uint32_t>(t.number_in("max_step", 1.0, 1.0, c.modulus - 1.0));
-  c.unlatch_steps = static_cast<std::uint32_t>(t.number_in("unlatch_steps", 1.0, 1.0, 1000.0));
+  if (s.value_type != dbc::ValueType::kInteger || s.mux_role == dbc::MuxRole::kMultiplexed)
+    throw t.error("signal", "counter must be an integer signal present in every frame");
+  c.modulus =
+      static_cast<std::uint32_t>(t.integer_in("modulus", 2, static_cast<long long>(max_modulus)));
+  c.max_step = static_cast<std::uint32_t>(t.integer_in("max_step", 1, 1, c.modulus - 1LL));
+  c.unlatch_steps = static_cast<std::uint32_t>(t.integer_in("unlatch_steps", 1, 1, 1000));
   t.finish();
   return c;
 }
@@ -72,14 +91,14 @@ ChecksumSpec parse_checksum(config::StrictTable t, const dbc::MessageDef& m) {
   if (t.has("bytes")) {
     // At most one entry per byte of the message: the covered bytes are gathered on the stack.
     bool listed[64] = {};
-    for (double b : t.numbers("bytes", m.length_bytes)) {
-      if (b < 0 || b >= m.length_bytes || b != std::floor(b)) {
+    for (const long long b : t.integers("bytes", m.length_bytes)) {
+      if (b < 0 || b >= m.length_bytes) {
         throw t.error("bytes", "byte index " + std::to_string(b) + " is outside message " + m.name +
                                    " (" + std::to_string(m.length_bytes) + " bytes)");
       }
       const auto i = static_cast<std::size_t>(b);
       if (own[i] != 0) throw t.error("bytes", "covered bytes include the checksum itself");
-      if (listed[i]) throw t.error("bytes", "byte " + std::to_string(i) + " listed twice");
+      if (listed[i]) throw t.error("bytes", "byte " + std::to_string(i) + " is listed twice");
       listed[i] = true;
       c.bytes.push_back(static_cast<std::uint8_t>(b));
     }
@@ -112,6 +131,12 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
   const dbc::MessageDef& m = db.messages[b.dbc_message];
   if (auto c = t.optional_table("counter")) b.counter = parse_counter(std::move(*c), m);
   if (auto c = t.optional_table("checksum")) b.checksum = parse_checksum(std::move(*c), m);
+  if (b.counter && b.checksum &&
+      share_bits(m.signals[b.counter->dbc_signal], m.signals[b.checksum->dbc_signal])) {
+    throw t.error("checksum", "counter " + m.signals[b.counter->dbc_signal].name +
+                                  " and checksum " + m.signals[b.checksum->dbc_signal].name +
+                                  " share bits of message " + m.name);
+  }
   if (rx) {
     const double default_ms = 3.0 * m.cycle_time_ms;
     if (!t.has("timeout_ms") && m.cycle_time_ms == 0) {
@@ -131,6 +156,8 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
     SignalBinding sb;
     sb.dbc_signal = signal_index(st, "dbc", m);
     const dbc::SignalDef& s = m.signals[sb.dbc_signal];
+    if (st.has("constant") && st.has("model"))
+      throw st.error("constant", "give model or constant, not both");
     if (!rx && st.has("constant")) {
       sb.constant = st.number("constant");
     } else {
@@ -140,6 +167,8 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
       if (rx && !model::info(*sb.model).is_input) {
         throw st.error("model", "'" + name + "' is a model output, it cannot be received");
       }
+      if (st.has("convert") && st.has("scale"))
+        throw st.error("scale", "give convert or scale, not both");
       const double named = named_scale(st);
       sb.scale = st.number("scale", named);
       if (sb.scale == 0.0 || !std::isfinite(sb.scale)) throw st.error("scale", "must be non-zero");
@@ -190,6 +219,14 @@ CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& da
       if (mapping.tx[i].dbc_message == mapping.tx[j].dbc_message) {
         throw table.error(
             "tx", "message " + database.messages[mapping.tx[i].dbc_message].name + " mapped twice");
+      }
+    }
+  }
+  for (const auto& r : mapping.rx) {
+    for (const auto& t : mapping.tx) {
+      if (r.dbc_message == t.dbc_message) {
+        throw table.error("tx", "message " + database.messages[t.dbc_message].name +
+                                    " is both received ([[rx]]) and sent ([[tx]])");
       }
     }
   }

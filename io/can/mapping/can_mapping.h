@@ -44,7 +44,9 @@
 /// jumping counter is a failure that latches the message: its frames are rejected until the
 /// counter has advanced properly `unlatch_steps` times in a row (default 1), also across a
 /// timeout (sequence_checker.h). Every name is checked against the DBC and model/signals.h, and
-/// every error is config::ConfigError("file:line: ...").
+/// every error is config::ConfigError("file:line: ..."). Contradictions are errors too: counter and
+/// checksum sharing bits, a checksum byte listed twice, `convert` with `scale`, `model` with
+/// `constant`, one message both received and sent.
 
 #include <cstdint>
 #include <filesystem>

@@ -38,6 +38,37 @@ TEST(StrictTable, ReadsValuesAndRejectsUnknownKeysWithLine) {
   EXPECT_EQ(msg, file.string() + ":4: [rig]: unknown key 'typo'");
 }
 
+// Every integer key is read with integer_in/integers: a float is an error with file:line, never
+// truncated (issue 13: `priority = 80.7` ran at 80).
+TEST(StrictTable, IntegerKeysRejectFloats) {
+  const auto file = write_file("strict_int.toml",
+                               "[rig]\npriority = 80.7\nround = 80.0\ncpu = 3\nbig = 200\n"
+                               "bytes = [0, 1]\nmixed = [0,\n 1.0]\n");
+  const toml::table root = config::load_toml_file(file);
+  config::StrictTable top(root, file, "top");
+  config::StrictTable rig = top.table("rig");
+  EXPECT_EQ(message_of([&] { (void)rig.integer_in("priority", 1, 99); }),
+            file.string() + ":2: [rig] priority: expected an integer, not 80.7 (a float)");
+  EXPECT_EQ(message_of([&] { (void)rig.integer_in("round", 1, 99); }),
+            file.string() + ":3: [rig] round: expected an integer, not 80 (a float)");
+  EXPECT_EQ(rig.integer_in("cpu", -1, -1, 1023), 3);
+  EXPECT_EQ(rig.integer_in("absent", -1, -1, 1023), -1);
+  EXPECT_EQ(message_of([&] { (void)rig.integer_in("big", 1, 99); }),
+            file.string() + ":5: [rig] big: value 200 out of range [1, 99]");
+  EXPECT_EQ(rig.integers("bytes"), (std::vector<long long>{0, 1}));
+  // the element's own line
+  EXPECT_EQ(message_of([&] { (void)rig.integers("mixed"); }),
+            file.string() + ":8: [rig] mixed: expected an array of integers");
+}
+
+TEST(StrictTable, LocationNamesTheKeysLine) {
+  const auto file = write_file("strict_loc.toml", "[routing]\n\nassist_torque_nm = \"can\"\n");
+  const toml::table root = config::load_toml_file(file);
+  config::StrictTable top(root, file, "top");
+  const config::StrictTable routing = top.table("routing");
+  EXPECT_EQ(routing.location("assist_torque_nm"), file.string() + ":3");
+}
+
 TEST(StrictTable, ParseErrorCarriesFileAndLine) {
   const auto file = write_file("strict2.toml", "a = 1\nb = = 2\n");
   const std::string msg = message_of([&] { (void)config::load_toml_file(file); });

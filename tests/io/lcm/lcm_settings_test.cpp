@@ -67,6 +67,37 @@ TEST(LcmSettings, RejectsBadValuesWithFileAndLine) {
             std::string::npos);
 }
 
+// A malformed URL is an error (it used to switch LCM off at start, silently); ttl > 0 warns.
+TEST(LcmUrl, MalformedUrlsAreNamed) {
+  EXPECT_EQ(lcm::lcm_url_problem("udpm://239.255.76.67:7667?ttl=0"), "");
+  EXPECT_EQ(lcm::lcm_url_problem("udpm://"), "");  // LCM's default group and port
+  EXPECT_EQ(lcm::lcm_url_problem("udpm://239.255.76.67:7667?ttl=1&recv_buf_size=2097152"), "");
+  EXPECT_EQ(lcm::lcm_url_problem("file:///tmp/x.lcm?mode=w"), "");
+  EXPECT_NE(lcm::lcm_url_problem("garbage").find("provider://address"), std::string::npos);
+  EXPECT_EQ(lcm::lcm_url_problem("udp://239.255.76.67:7667"),
+            "unknown LCM provider 'udp' (udpm, mpudpm, file, memq, tcpq)");
+  EXPECT_EQ(lcm::lcm_url_problem("udpm://10.0.0.1:7667"),
+            "'10.0.0.1' is not an IPv4 multicast group (224.0.0.0 - 239.255.255.255)");
+  EXPECT_EQ(lcm::lcm_url_problem("udpm://239.255.76.67:0"), "port '0' is not in 1..65535");
+  EXPECT_EQ(lcm::lcm_url_problem("udpm://239.255.76.67:70000"), "port '70000' is not in 1..65535");
+  EXPECT_EQ(lcm::lcm_url_problem("udpm://239.255.76.67"),
+            "udpm needs GROUP:PORT, e.g. 239.255.76.67:7667");
+  EXPECT_EQ(lcm::lcm_url_problem("udpm://239.255.76.67:7667?ttl=256"),
+            "ttl '256' is not in 0..255");
+  EXPECT_EQ(lcm::lcm_url_problem("udpm://239.255.76.67:7667?tll=1"),
+            "unknown udpm option 'tll' (ttl, recv_buf_size)");
+  EXPECT_EQ(lcm::lcm_url_problem("udpm://239.255.76.67:7667?ttl"), "option 'ttl' is not key=value");
+}
+
+TEST(LcmUrl, TtlAboveZeroGivesOneWarning) {
+  EXPECT_EQ(lcm::lcm_url_ttl("udpm://239.255.76.67:7667?ttl=0"), 0);
+  EXPECT_EQ(lcm::lcm_url_ttl("udpm://239.255.76.67:7667?recv_buf_size=9&ttl=3"), 3);
+  EXPECT_EQ(lcm::lcm_url_warning("udpm://239.255.76.67:7667?ttl=0"), "");
+  EXPECT_EQ(lcm::lcm_url_warning("udpm://239.255.76.67:7667?ttl=1"),
+            "rig: warning: LCM URL udpm://239.255.76.67:7667?ttl=1 has ttl=1: the rig's LCM "
+            "traffic leaves this host (up to 1 router hop); ttl=0 keeps it here");
+}
+
 TEST(MulticastRoute, ParsesUdpmUrls) {
   const auto a = lcm::parse_udpm_url("udpm://239.255.76.67:7667?ttl=0");
   ASSERT_TRUE(a.has_value());

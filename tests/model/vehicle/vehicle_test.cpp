@@ -367,6 +367,50 @@ TEST(VehicleConfig, UnknownKeyIsAnErrorWithFileAndLine) {
   }
 }
 
+// Impossible vehicles (issue 13) are errors at load, with the line of the offending key.
+TEST(VehicleConfig, ImpossibleVehiclesAreErrorsWithFileAndLine) {
+  struct Mutation {
+    std::string from, to, message;
+  };
+  const std::vector<Mutation> mutations = {
+      {"[4.17, 2.34,", "[4.17, 0.0,", "gear_ratios: ratios must lie in [0.1, 50]"},
+      {"[4.17, 2.34,", "[2.0, 2.34,", "fall strictly from first gear to top gear"},
+      {"[150.0, 250.0,", "[150.0, -250.0,", "engine torques must lie in [0, 1e5] N m"},
+      {"inertia_xx_kgm2 = 480.0", "inertia_xx_kgm2 = 4500.0", "no rigid body has these inertias"},
+      {"inertia_xz_kgm2 = 0.0", "inertia_xz_kgm2 = 1100.0", "positive definite"},
+      {"position_x_m = -1.60", "position_x_m = 1.20", "[[axle]] tables go from front to rear"},
+      {"initial_slope_n = 55000.0", "initial_slope_n = 20000.0",
+       "must exceed max_force_n / slip_at_max"},
+      {"max_force_n = 7500.0, slip_at_max = 0.22, sliding_force_n = 7400.0",
+       "max_force_n = 9000.0, slip_at_max = 0.22, sliding_force_n = 7400.0",
+       "max_force_n must exceed that of [lateral_nominal] and be at most twice it"},
+      {"downshift_speed_radps = 120.0", "downshift_speed_radps = 200.0",
+       "must be below upshift_speed_low_radps"},
+      {"upshift_speed_high_radps = 580.0", "upshift_speed_high_radps = 700.0",
+       "must not exceed max_speed_radps"},
+  };
+  std::ifstream in(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+  const std::string sedan((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto file = std::filesystem::temp_directory_path() / "rig_impossible_vehicle.toml";
+  for (const auto& m : mutations) {
+    std::string text = sedan;
+    const auto pos = text.find(m.from);
+    ASSERT_NE(pos, std::string::npos) << m.from;
+    text.replace(pos, m.from.size(), m.to);
+    const int line = static_cast<int>(std::count(text.begin(), text.begin() + pos, '\n')) + 1;
+    std::ofstream(file) << text;
+    try {
+      (void)io::config::load_vehicle_file(file);
+      ADD_FAILURE() << "no error for " << m.to;
+    } catch (const io::config::ConfigError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(file.string() + ":" + std::to_string(line) + ":", 0), 0u) << what;
+      EXPECT_NE(what.find(m.message), std::string::npos) << what;
+    }
+  }
+  std::filesystem::remove(file);
+}
+
 TEST(Vehicle, GradeBrakeToStandstillHoldAndDriveAway) {
   VehicleParams p = sedan();
   p.road.grade = 0.20;

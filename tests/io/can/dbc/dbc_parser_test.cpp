@@ -119,9 +119,9 @@ TEST(DbcParser, MultiplexedSignals) {
 }
 
 TEST(DbcParser, CommentsValuesAttributesValueTypes) {
-  const Database db = parse_dbc(R"(BO_ 1 M: 8 A
+  const Database db = parse_dbc(R"(BO_ 1 M: 12 A
  SG_ F : 0|32@1- (1,0) [0|0] "" B
- SG_ D : 0|64@1- (1,0) [0|0] "" B
+ SG_ D : 32|64@1- (1,0) [0|0] "" B
 BO_ 2 N: 8 A
  SG_ E : 0|8@1+ (1,0) [0|3] "" B
 CM_ "network";

@@ -123,5 +123,40 @@ TEST_F(CanMappingErrors, TxInvalidRawMustFitTheSignal) {
               HasSubstr("invalid"));
 }
 
+// Settings that contradict each other are errors with the line (issue 13), not a silent winner.
+TEST_F(CanMappingErrors, ContradictorySettingsNameTheLine) {
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
+                       "counter = { signal = \"EPS_Checksum\", modulus = 16 }\n"
+                       "checksum = { signal = \"EPS_Checksum\" }\n"),
+              HasSubstr(":5: [can mapping].rx[0] checksum: counter EPS_Checksum and checksum "
+                        "EPS_Checksum share bits of message EPS_Status"));
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
+                       "checksum = { signal = \"EPS_Checksum\", bytes = [0, 1, 0] }\n"),
+              HasSubstr("byte 0 is listed twice"));
+  // 65 entries (a list the stack buffer of issue 13 overflowed): a repeat long before that
+  std::string many = "0";
+  for (int i = 1; i < 65; ++i) many += ", " + std::to_string(i % 7);
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
+                       "checksum = { signal = \"EPS_Checksum\", bytes = [" +
+                       many + "] }\n"),
+              HasSubstr("is listed twice"));
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
+                       "checksum = { signal = \"EPS_Checksum\", bytes = [0, 1.0] }\n"),
+              HasSubstr("expected an array of integers"));
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n"
+                       "counter = { signal = \"EPS_Counter\", modulus = 15.5 }\n"),
+              HasSubstr(":4: [counter] modulus: expected an integer, not 15.5"));
+  EXPECT_THAT(
+      error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[rx.signal]]\n"
+               "dbc = \"EPS_MotorTorque\"\nmodel = \"assist_torque_nm\"\n"
+               "convert = \"deg_to_rad\"\nscale = 2.0\n"),
+      HasSubstr(":8: [can mapping].rx[0].signal[0] scale: give convert or scale, not both"));
+  EXPECT_THAT(error_of("[[tx]]\nmessage = \"RIG_VehicleSpeed\"\n[[tx.signal]]\n"
+                       "dbc = \"VehicleSpeed\"\nmodel = \"vehicle_speed_mps\"\nconstant = 1.0\n"),
+              HasSubstr(":7: [can mapping].tx[0].signal[0] constant: give model or constant"));
+  EXPECT_THAT(error_of("[[rx]]\nmessage = \"EPS_Status\"\n[[tx]]\nmessage = \"EPS_Status\"\n"),
+              HasSubstr("message EPS_Status is both received ([[rx]]) and sent ([[tx]])"));
+}
+
 }  // namespace
 }  // namespace rig::io::can
