@@ -25,7 +25,8 @@ expect.toml:
   files_exist = ["out.log.1"]               # paths relative to the work dir
   files_absent = [...]
   json_valid = ["summary.json"]             # must parse as strict JSON (no NaN/inf)
-  check = "check.py"                        # optional script run after (cwd = work dir), exit 0
+  check = "check.py"                        # optional script run after (cwd = work dir), exit 0;
+                                            # it may import case_checks (this folder)
 
 Every case also fails on a death by signal that `exit` does not name (exit = -11 would name
 SIGSEGV) and on a sanitizer report in stderr.
@@ -168,8 +169,9 @@ def judge(expect, rc, out, err, work):
         except (OSError, ValueError) as e:
             problems.append(f"{rel} is not valid JSON: {e}")
     if "check" in expect:
+        env = dict(os.environ, PYTHONPATH=str(HERE))  # case_checks.py, shared by the checks
         check = subprocess.run(["/usr/bin/python3", str(work / expect["check"])], cwd=work,
-                               capture_output=True, text=True, timeout=60)
+                               env=env, capture_output=True, text=True, timeout=60)
         if check.returncode != 0:
             problems.append(f"check failed: {check.stdout}{check.stderr}".strip())
     return problems

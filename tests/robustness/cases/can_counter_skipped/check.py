@@ -1,15 +1,2 @@
-import json
-import sys
-
-can = json.load(open("summary.json"))["can"]
-events = [json.loads(line) for line in open("events.jsonl")]
-
-
-def expect(ok, what):
-    if not ok:
-        print(what, "| can:", can, "| events:",
-              [(e["event"], e.get("detail")) for e in events if e["event"] != "deadline_miss"])
-        sys.exit(1)
-
-
+from case_checks import can, events, expect  # noqa: F401
 expect(can["counter_failures"] == 1, "the jump is rejected, the next proper step accepted")

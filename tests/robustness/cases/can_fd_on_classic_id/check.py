@@ -1,16 +1,3 @@
-import json
-import sys
-
-can = json.load(open("summary.json"))["can"]
-events = [json.loads(line) for line in open("events.jsonl")]
-
-
-def expect(ok, what):
-    if not ok:
-        print(what, "| can:", can, "| events:",
-              [(e["event"], e.get("detail")) for e in events if e["event"] != "deadline_miss"])
-        sys.exit(1)
-
-
+from case_checks import can, events, expect  # noqa: F401
 expect(can["bad_frames"] == 6, "6 FD frames on a classic id, 6 bad frames")
 expect(can["counter_failures"] == 0 and can["checksum_failures"] == 0, "never decoded")

@@ -1,17 +1,4 @@
-import json
-import sys
-
-can = json.load(open("summary.json"))["can"]
-events = [json.loads(line) for line in open("events.jsonl")]
-
-
-def expect(ok, what):
-    if not ok:
-        print(what, "| can:", can, "| events:",
-              [(e["event"], e.get("detail")) for e in events if e["event"] != "deadline_miss"])
-        sys.exit(1)
-
-
+from case_checks import can, events, expect  # noqa: F401
 rx = [e for e in events if e["event"] == "out_of_range" and e["detail"].startswith("rx ")]
 import re
 counts = [int(re.search(r"; (\d+) since the last report$", e["detail"]).group(1)) for e in rx]
