@@ -5,6 +5,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "io/can/mapping/can_mapping.h"
 #include "io/config/config_error.h"
 #include "io/log/output_file.h"
 #include "rig/model_factory.h"
@@ -55,7 +56,8 @@ std::vector<std::filesystem::path> input_files(const RigConfig& c) {
   }
   if (c.can) {
     in.push_back(c.can->mapping_file);
-    if (c.can->dbc_file) in.push_back(*c.can->dbc_file);
+    in.push_back(c.can->dbc_file ? *c.can->dbc_file
+                                 : io::can::mapping::mapping_dbc_path(c.can->mapping_file));
   }
   return in;
 }

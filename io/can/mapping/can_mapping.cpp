@@ -254,4 +254,10 @@ CanConfig load_can_config(const std::filesystem::path& toml_file) {
   return config;
 }
 
+std::filesystem::path mapping_dbc_path(const std::filesystem::path& toml_file) {
+  const toml::table root = config::load_toml_file(toml_file);
+  config::StrictTable table(root, toml_file, "[can mapping]");
+  return table.existing_path("dbc");
+}
+
 }  // namespace rig::io::can::mapping

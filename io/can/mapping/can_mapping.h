@@ -112,5 +112,8 @@ CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& da
 
 /// Reads a mapping TOML file: its `dbc` key (relative path) is loaded with load_dbc.
 CanConfig load_can_config(const std::filesystem::path& toml_file);
+/// The DBC a mapping file names (its `dbc` key, resolved relative to the file), without loading
+/// either: what the rig reads, so that no output may overwrite it.
+std::filesystem::path mapping_dbc_path(const std::filesystem::path& toml_file);
 
 }  // namespace rig::io::can::mapping
