@@ -164,7 +164,7 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
          ",\n";
   }
   j += "  \"write_failures\": " + write_failures_json(x.write_failures) + ",\n";
-  j += "  \"stop_reason\": \"" + x.stop_reason + "\",\n";
+  j += "  \"stop_reason\": " + json_string(x.stop_reason) + ",\n";
   j += fmt("  \"exit_code\": %d\n}\n", x.exit_code);
   return j;
 }

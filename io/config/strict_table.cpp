@@ -85,7 +85,10 @@ double StrictTable::number_in(std::string_view key, double fallback, double min,
 long long StrictTable::integer(std::string_view key) {
   const toml::node& node = require(key);
   if (auto i = node.value_exact<int64_t>()) return *i;
-  throw error(key, "expected an integer");
+  std::ostringstream msg;
+  msg << "expected an integer";
+  if (const auto f = node.value_exact<double>()) msg << ", not " << *f << " (a float)";
+  throw error(key, msg.str());
 }
 
 long long StrictTable::integer(std::string_view key, long long fallback) {
@@ -93,19 +96,12 @@ long long StrictTable::integer(std::string_view key, long long fallback) {
 }
 
 long long StrictTable::integer_in(std::string_view key, long long min, long long max) {
-  const toml::node& node = require(key);
-  const auto i = node.value_exact<int64_t>();
-  if (!i) {
-    std::ostringstream msg;
-    msg << "expected an integer";
-    if (const auto f = node.value_exact<double>()) msg << ", not " << *f << " (a float)";
-    throw error(key, msg.str());
+  const long long i = integer(key);
+  if (i < min || i > max) {
+    throw error(key, "value " + std::to_string(i) + " out of range [" + std::to_string(min) + ", " +
+                         std::to_string(max) + "]");
   }
-  if (*i < min || *i > max) {
-    throw error(key, "value " + std::to_string(*i) + " out of range [" + std::to_string(min) +
-                         ", " + std::to_string(max) + "]");
-  }
-  return *i;
+  return i;
 }
 
 long long StrictTable::integer_in(std::string_view key, long long fallback, long long min,
