@@ -11,9 +11,9 @@
 
 namespace rig::io {
 
-/// A set of model inputs (bit model::index(signal)), e.g. those an adapter feeds. Decided once
+/// A set of model inputs (bit: the input slot, model::index(signal) or a unit block slot), e.g. those an adapter feeds. Decided once
 /// at start (the rig's routing) and handed to each adapter at construction.
-using InputSet = std::bitset<model::kSignalCount>;
+using InputSet = std::bitset<model::kSlotCount>;
 
 /// Something an adapter wants in the event log (a bus state change, a rate-limited report):
 /// plain data, fixed size (the sizes of the log's records, io/log/log_record.h).

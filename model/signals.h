@@ -10,41 +10,46 @@
 #include <optional>
 #include <string_view>
 
+#include "model/report.h"
+
 namespace rig::model {
 
 /// Every model input and output. Names carry their unit; all values are SI.
 enum class Signal : std::uint16_t {
   // ---- inputs ----
-  kSteeringWheelAngleCmd,   ///< driver steering wheel angle command [rad] (angle mode)
-  kSteeringWheelTorqueCmd,  ///< driver hand torque on the steering wheel [N m] (torque mode)
-  kAssistTorque,            ///< power-assist (EPS motor) torque on the pinion [N m]
-  kThrottlePedal,           ///< accelerator pedal position [0..1]
-  kBrakePressureFront,      ///< brake circuit pressure, front axle(s) [Pa]
-  kBrakePressureRear,       ///< brake circuit pressure, rear axle(s) [Pa]
-  kGearRequest,             ///< requested gear: -1 reverse, 0 neutral, 1..n, 99 = automatic [-]
+  kSteeringWheelAngleCmd,    ///< driver steering wheel angle command [rad] (angle mode)
+  kSteeringWheelTorqueCmd,   ///< driver hand torque on the steering wheel [N m] (torque mode)
+  kAssistTorque,             ///< power-assist (EPS motor) torque on the pinion [N m]
+  kThrottlePedal,            ///< accelerator pedal position [0..1]
+  kBrakePressureFront,       ///< brake circuit pressure, front axle(s) [Pa]
+  kBrakePressureRear,        ///< brake circuit pressure, rear axle(s) [Pa]
+  kGearRequest,              ///< requested gear: -1 reverse, 0 neutral, 1..n, 99 = automatic [-]
+  kSteeringOverlayAngleCmd,  ///< overriding gear: angle superimposed at the pinion [rad]
+  kIgnition,                 ///< terminal state: 0 off, 1 accessory (Kl. 75), 2 on (Kl. 15),
+                             ///< 3 start (Kl. 50); not valid (unrouted): on [-]
   // ---- outputs ----
-  kVehicleSpeed,            ///< longitudinal speed of the (first) unit's CG [m/s]
-  kWheelSpeedFL,            ///< wheel spin rate, front left [rad/s]
-  kWheelSpeedFR,            ///< wheel spin rate, front right [rad/s]
-  kWheelSpeedRL,            ///< wheel spin rate, rear left [rad/s]
-  kWheelSpeedRR,            ///< wheel spin rate, rear right [rad/s]
-  kLongitudinalAccel,       ///< longitudinal acceleration in body axes [m/s^2]
-  kLateralAccel,            ///< lateral acceleration in body axes [m/s^2]
-  kYawRate,                 ///< yaw rate [rad/s]
-  kSteeringWheelAngle,      ///< measured steering wheel angle [rad]
-  kSteeringWheelSpeed,      ///< measured steering wheel speed [rad/s]
-  kTorsionBarTorque,        ///< torsion bar torque, what the assist senses [N m]
-  kRackPosition,            ///< rack travel [m]
-  kRackForce,               ///< sum of tie-rod forces on the rack [N]
-  kEngineSpeed,             ///< engine speed [rad/s]
-  kGear,                    ///< engaged gear [-]
-  kBrakePressureFL,         ///< effective wheel brake pressure, front left [Pa]
-  kBrakePressureFR,         ///< effective wheel brake pressure, front right [Pa]
-  kBrakePressureRL,         ///< effective wheel brake pressure, rear left [Pa]
-  kBrakePressureRR,         ///< effective wheel brake pressure, rear right [Pa]
-  kPositionX,               ///< CG position x in the road frame [m]
-  kPositionY,               ///< CG position y in the road frame [m]
-  kHeading,                 ///< yaw angle [rad]
+  kVehicleSpeed,        ///< longitudinal speed of the (first) unit's CG [m/s]
+  kWheelSpeedFL,        ///< wheel spin rate, front left [rad/s]
+  kWheelSpeedFR,        ///< wheel spin rate, front right [rad/s]
+  kWheelSpeedRL,        ///< wheel spin rate, rear left [rad/s]
+  kWheelSpeedRR,        ///< wheel spin rate, rear right [rad/s]
+  kLongitudinalAccel,   ///< longitudinal acceleration in body axes [m/s^2]
+  kLateralAccel,        ///< lateral acceleration in body axes [m/s^2]
+  kYawRate,             ///< yaw rate [rad/s]
+  kSteeringWheelAngle,  ///< measured steering wheel angle [rad]
+  kSteeringWheelSpeed,  ///< measured steering wheel speed [rad/s]
+  kTorsionBarTorque,    ///< torsion bar torque, what the assist senses [N m]
+  kRackPosition,        ///< rack travel [m]
+  kRackForce,           ///< sum of tie-rod forces on the rack [N]
+  kEngineSpeed,         ///< engine speed [rad/s]
+  kGear,                ///< engaged gear [-]
+  kBrakePressureFL,     ///< effective wheel brake pressure, front left [Pa]
+  kBrakePressureFR,     ///< effective wheel brake pressure, front right [Pa]
+  kBrakePressureRL,     ///< effective wheel brake pressure, rear left [Pa]
+  kBrakePressureRR,     ///< effective wheel brake pressure, rear right [Pa]
+  kPositionX,           ///< CG position x in the road frame [m]
+  kPositionY,           ///< CG position y in the road frame [m]
+  kHeading,             ///< yaw angle [rad]
   kCount
 };
 
@@ -70,6 +75,8 @@ inline constexpr std::array<SignalInfo, kSignalCount> kSignalTable{{
     {Signal::kBrakePressureFront, "brake_pressure_front_pa", "Pa", true},
     {Signal::kBrakePressureRear, "brake_pressure_rear_pa", "Pa", true},
     {Signal::kGearRequest, "gear_request", "1", true},
+    {Signal::kSteeringOverlayAngleCmd, "steering_overlay_angle_cmd_rad", "rad", true},
+    {Signal::kIgnition, "ignition_state", "1", true},
     {Signal::kVehicleSpeed, "vehicle_speed_mps", "m/s", false},
     {Signal::kWheelSpeedFL, "wheel_speed_fl_radps", "rad/s", false},
     {Signal::kWheelSpeedFR, "wheel_speed_fr_radps", "rad/s", false},
@@ -127,17 +134,54 @@ constexpr InputRange input_range(Signal s) {
       return {0.0, 3e7};  // 300 bar
     case Signal::kGearRequest:
       return {-1.0, 99.0, true};
+    case Signal::kSteeringOverlayAngleCmd:
+      return {-1.0, 1.0};  // +-57 deg at the pinion, beyond any superposition gear's travel
+    case Signal::kIgnition:
+      return {0.0, 3.0, true};
     default:
       return {0.0, 0.0};  // outputs: no source sets them
   }
 }
 
-/// The values of all signals, their validity and (for inputs) their source. Plain data: copied
-/// by value into snapshots, never allocates.
+/// Input slots. Every model input has one slot in Signals: the enum's signals first (slot =
+/// index(signal)), then, from kSignalCount on, a block of kUnitInputCount slots per unit of a
+/// combination (model/report.h kMaxUnits): its wheels' brake pressures (wheel i as in the
+/// report: axles front to rear, left before right) and its two brake circuits. A valid wheel
+/// pressure replaces its circuit's for that wheel (an ESC's modulated pressure); a unit's
+/// circuit that is not valid follows the enum's circuits (kBrakePressureFront/Rear), which are
+/// the first unit's. The first unit's block keeps its two circuit slots unused (the enum's serve).
+inline constexpr std::size_t kUnitInputCount = static_cast<std::size_t>(kMaxWheelsPerUnit) + 2;
+inline constexpr std::size_t kSlotCount =
+    kSignalCount + static_cast<std::size_t>(kMaxUnits) * kUnitInputCount;
+
+/// Slot of the brake pressure input of wheel `wheel` of unit `unit` (both from 0).
+constexpr std::size_t wheel_brake_slot(int unit, int wheel) {
+  return kSignalCount + static_cast<std::size_t>(unit) * kUnitInputCount +
+         static_cast<std::size_t>(wheel);
+}
+/// Slot of brake circuit `circuit` (0 front, 1 rear) of unit `unit`: the enum's for unit 0.
+constexpr std::size_t brake_circuit_slot(int unit, int circuit) {
+  if (unit == 0) {
+    return index(circuit == 0 ? Signal::kBrakePressureFront : Signal::kBrakePressureRear);
+  }
+  return kSignalCount + static_cast<std::size_t>(unit) * kUnitInputCount +
+         static_cast<std::size_t>(kMaxWheelsPerUnit) + static_cast<std::size_t>(circuit);
+}
+/// Whether a slot holds an input (the enum's inputs and every unit block) or an output.
+constexpr bool slot_is_input(std::size_t slot) {
+  return slot < index(kFirstOutput) || slot >= kSignalCount;
+}
+/// The values an input slot may take (the unit blocks: pressures, 0..300 bar).
+constexpr InputRange slot_range(std::size_t slot) {
+  return slot < kSignalCount ? input_range(static_cast<Signal>(slot)) : InputRange{0.0, 3e7};
+}
+
+/// The values of all slots (the enum's signals, then the unit input blocks), their validity and
+/// (for inputs) their source. Plain data: copied by value into snapshots, never allocates.
 struct Signals {
-  std::array<double, kSignalCount> value{};
-  std::array<bool, kSignalCount> valid{};
-  std::array<SignalSource, kSignalCount> source{};
+  std::array<double, kSlotCount> value{};
+  std::array<bool, kSlotCount> valid{};
+  std::array<SignalSource, kSlotCount> source{};
 
   double& operator[](Signal s) { return value[index(s)]; }
   double operator[](Signal s) const { return value[index(s)]; }

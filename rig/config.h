@@ -66,7 +66,7 @@ struct RigConfig {
   std::optional<io::can::bridge::CanSettings> can;  ///< [can], read by io/can's read_can_settings
   /// `file:line` of each [routing] entry `= "can"` ("" for the others), for errors found when
   /// the mapping is loaded (an input routed to CAN that no [[rx]] signal receives).
-  std::array<std::string, model::kSignalCount> can_route_at{};
+  std::array<std::string, model::kSlotCount> can_route_at{};
 };
 
 /// Loads and validates a configuration file. Throws ConfigError("file:line: ...").

@@ -67,7 +67,7 @@ class CycleHook {
 
 class Executive {
  public:
-  using Sources = std::array<model::SignalSource, model::kSignalCount>;
+  using Sources = std::array<model::SignalSource, model::kSlotCount>;
 
   /// Every pointer must outlive the executive; `driver` may be null. `sources` (rig/routing) is
   /// published with every snapshot; nothing on the loop decides by it. Allocates everything here.

@@ -21,14 +21,14 @@ namespace rig {
 
 /// One input's entry in [routing], as written.
 enum class RouteRequest : std::uint8_t { kNone, kDriver, kCan };
-using RoutingRequests = std::array<RouteRequest, model::kSignalCount>;
+using RoutingRequests = std::array<RouteRequest, model::kSlotCount>;
 
 /// Reads [routing]: `<input name> = "driver" | "can"`. ConfigError (file:line) for unknown
 /// names, outputs or values. Calls finish().
 RoutingRequests read_routing(io::config::StrictTable& routing_table);
 
 struct Routing {
-  std::array<model::SignalSource, model::kSignalCount> source{};  ///< published, per input
+  std::array<model::SignalSource, model::kSlotCount> source{};  ///< published, per input
   io::InputSet can_inputs;                                        ///< what the CAN bridge feeds
   io::InputSet driver_inputs;                                     ///< what the driver feeds
   /// The assist torque: the ECU's (`assist_torque_nm = "can"`), else the built-in boost curve.
