@@ -24,6 +24,7 @@ struct WheelReport {
   double hub_travel_m = 0;    ///< suspension travel
   double steer_angle_rad = 0;
   double brake_torque_nm = 0;
+  double brake_pressure_pa = 0;  ///< the pressure the model applied (wheel input or circuit)
   double drive_torque_nm = 0;
   // what the tire saw (model/tire's TireKinematics and the load of its characteristic): with
   // the road's mu and the deflections these reproduce force_x_n, force_y_n exactly
@@ -48,6 +49,7 @@ struct UnitReport {
 
 struct SteeringReport {
   double wheel_angle_rad = 0;
+  double wheel_speed_radps = 0;
   double wheel_torque_nm = 0;  ///< driver hand torque
   double torsion_bar_torque_nm = 0;
   double rack_travel_m = 0;

@@ -62,6 +62,7 @@ struct VehicleStateFields {
       {"wheel_y_e_m", "m", member<&W::deflection_y_m>, &S::wheel_y_e_m},
       {"wheel_steer_rad", "rad", member<&W::steer_angle_rad>, &S::wheel_steer_rad},
       {"wheel_brake_torque_nm", "N m", member<&W::brake_torque_nm>, &S::wheel_brake_torque_nm},
+      {"wheel_brake_pressure_pa", "Pa", member<&W::brake_pressure_pa>, &S::wheel_brake_pressure_pa},
       {"wheel_drive_torque_nm", "N m", member<&W::drive_torque_nm>, &S::wheel_drive_torque_nm},
       {"wheel_hub_travel_m", "m", member<&W::hub_travel_m>, &S::wheel_hub_travel_m},
       {"wheel_long_speed_mps", "m/s", member<&W::long_speed_mps>, &S::wheel_long_speed_mps},
@@ -79,6 +80,8 @@ struct VehicleStateFields {
   static constexpr ScalarField<S, R> kVehicle[] = {
       {"steering_wheel_angle_rad", "rad", member<&R::steering, &Steering::wheel_angle_rad>,
        &S::steering_wheel_angle_rad},
+      {"steering_wheel_speed_radps", "rad/s", member<&R::steering, &Steering::wheel_speed_radps>,
+       &S::steering_wheel_speed_radps},
       {"steering_wheel_torque_nm", "N m", member<&R::steering, &Steering::wheel_torque_nm>,
        &S::steering_wheel_torque_nm},
       {"torsion_bar_torque_nm", "N m", member<&R::steering, &Steering::torsion_bar_torque_nm>,

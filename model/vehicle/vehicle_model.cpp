@@ -10,12 +10,16 @@
 
 namespace rig::model::vehicle {
 
-VehicleModel::VehicleModel(const VehicleParams& params, double step_size_s)
-    : p_(params), h_(step_size_s), fault_check_(p_) {
+VehicleModel::VehicleModel(const VehicleParams& params, double step_size_s, int unit_index)
+    : p_(params), h_(step_size_s), unit_(unit_index), fault_check_(p_) {
   if (p_.axles.empty() || 2 * p_.axles.size() > static_cast<std::size_t>(kMaxWheels)) {
     throw std::invalid_argument("vehicle: need 1.." + std::to_string(kMaxWheels / 2) + " axles");
   }
   if (!(h_ > 0)) throw std::invalid_argument("vehicle: step size must be > 0");
+  if (unit_ < 0 || unit_ >= kMaxUnits) {
+    throw std::invalid_argument("vehicle: unit index " + std::to_string(unit_) + " not in 0.." +
+                                std::to_string(kMaxUnits - 1));
+  }
   work_.wheel_count = 2 * static_cast<int>(p_.axles.size());
   state_ = make_state(p_, driven_wheels(p_).count);
   saved_ = state_;
@@ -66,7 +70,7 @@ StepStatus VehicleModel::step(Signals& signals) noexcept {
 }
 
 void VehicleModel::set_inputs(const Signals& signals) noexcept {
-  inputs_ = read_inputs(p_, signals);
+  inputs_ = read_inputs(p_, unit_, signals);
 }
 
 void VehicleModel::begin_step(double h) noexcept {
