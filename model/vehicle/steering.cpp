@@ -16,9 +16,9 @@ void Steering::mass_matrix(const Vector& y, Matrix& m) const noexcept {
 double Steering::torsion_bar_torque_nm(const Vector& y, const Vector& z) const noexcept {
   const double i = p_.rack_per_pinion_m_per_rad;
   // the overriding gear turns the pinion against the torsion bar's lower end: that end is at
-  // u / i_SB - overlay; the overlay's rate is left out (an angle input, often a step)
-  return p_.torsion_bar_stiffness_nmpr * (y(0) - y(1) / i + inputs_.overlay_angle_rad) +
-         p_.torsion_bar_damping_nmspr * (z(0) - z(1) / i);
+  // u / i_SB - overlay (the overlay as its rate limit lets it follow the command)
+  return p_.torsion_bar_stiffness_nmpr * (y(0) - y(1) / i + state_.overlay_rad) +
+         p_.torsion_bar_damping_nmspr * (z(0) - z(1) / i + state_.overlay_rate_radps);
 }
 
 double Steering::assist_torque_nm(double torsion_bar_nm) const noexcept {

@@ -8,7 +8,8 @@
 /// from the wheels (VehicleWorkspace::rack_force_n). The wheel is driven by hand torque or, in
 /// angle mode, by a stiff position servo (a steering robot). The optional overriding gear of
 /// sec. 2.2 in its simple form: an overlay angle added at the pinion (the torsion bar's lower
-/// end at u / i_SB - overlay), so with the hand wheel held the rack moves by overlay x i_SB.
+/// end at u / i_SB - overlay), so with the hand wheel held the rack moves by overlay x i_SB;
+/// the overlay follows its command at most at overlay_rate_max_radps (VehicleState).
 /// Ignition off: no assist (neither the input nor the boost curve).
 
 #include "model/solver/mechanical_block.h"

@@ -115,6 +115,9 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   std::unique_ptr<VehicleBlocks> blocks_;
   Eigen::VectorXd zero_rate_;
   StepStatus last_status_ = StepStatus::kOk;
+
+  /// The overriding gear's angle towards the overlay command, rate limited (begin_step).
+  void follow_overlay(double h) noexcept;
 };
 
 }  // namespace rig::model::vehicle
