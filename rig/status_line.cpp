@@ -7,7 +7,9 @@ namespace {
 
 unsigned long long ull(std::uint64_t v) { return static_cast<unsigned long long>(v); }
 double us(std::int64_t ns) { return static_cast<double>(ns) / 1e3; }
-std::uint64_t whole_us(std::int64_t ns) { return ns <= 0 ? 0 : static_cast<std::uint64_t>(ns) / 1000; }
+std::uint64_t whole_us(std::int64_t ns) {
+  return ns <= 0 ? 0 : static_cast<std::uint64_t>(ns) / 1000;
+}
 
 std::string timing_text(const StatusFigures& f) {
   char buf[256];
