@@ -5,7 +5,8 @@ DESTDIR stage, for --prefix /usr and /opt/rig, and what the installed service ne
 For each prefix: the staged unit's ExecStart binary, its --config file and its Documentation=
 file exist in the stage; `systemd-analyze verify` of the staged unit exits 0 with an empty
 stderr; `systemd-analyze security --offline=true --threshold=30` exits 0 and rates it at most
-3.0; the udev rule holds exactly the cpu_dma_latency line; no vcan file is installed; the staged
+3.0 (both by unit name under --root=STAGE; the /opt unit linked into STAGE/etc/systemd/system as
+`systemctl link` does); the udev rule holds exactly the cpu_dma_latency line; no vcan file is installed; the staged
 `rig check` accepts the staged configuration. Then `--component vcan` installs the four vcan
 files and nothing else. Everything offline: PID 1 need not be systemd.
 
@@ -73,25 +74,43 @@ def check_unit_paths(stage: pathlib.Path, unit: pathlib.Path, prefix: str) -> st
     return config
 
 
+# Where systemd looks for units (under --root): the unit of a prefix outside these is linked
+# into /etc/systemd/system, as `systemctl link` does (README "Installing as a service").
+UNIT_PATH = ["/etc/systemd/system", "/usr/local/lib/systemd/system", "/usr/lib/systemd/system",
+             "/lib/systemd/system"]
+
+
+def link_unit(stage: pathlib.Path, unit_path: str) -> None:
+    if str(pathlib.PurePath(unit_path).parent) in UNIT_PATH:
+        return
+    link = staged(stage, "/etc/systemd/system/rig.service")
+    link.parent.mkdir(parents=True, exist_ok=True)
+    # Relative, so that it resolves inside the stage (systemctl link writes an absolute one).
+    link.symlink_to(os.path.relpath(staged(stage, unit_path), link.parent))
+    print(f"     linked {unit_path} as /etc/systemd/system/rig.service (systemctl link)")
+
+
 def check_systemd_analyze(stage: pathlib.Path, unit: pathlib.Path) -> None:
     # verify exits 0 on many errors: first prove that it reports a bad key on stderr here.
-    bad = unit.with_name("rig-bad.service")
+    bad = staged(stage, "/etc/systemd/system/rig-bad.service")
+    bad.parent.mkdir(parents=True, exist_ok=True)
     bad.write_text(unit.read_text().replace("[Service]\n", "[Service]\nBogusKey=1\n", 1))
-    r = run(["systemd-analyze", "verify", f"--root={stage}", "--recursive-errors=no", str(bad)])
+    r = run(["systemd-analyze", "verify", f"--root={stage}", "--recursive-errors=no",
+             "rig-bad.service"])
     bad.unlink()
     expect("BogusKey" in r.stderr, "systemd-analyze verify reports a bad key on stderr")
-    # The staged unit file itself, its paths looked up under --root (the stage).
-    r = run(["systemd-analyze", "verify", f"--root={stage}", "--recursive-errors=no", str(unit)])
+    r = run(["systemd-analyze", "verify", f"--root={stage}", "--recursive-errors=no",
+             "rig.service"])
     expect(r.returncode == 0 and r.stderr == "",
            f"systemd-analyze verify exits 0 ({r.returncode}) with empty stderr: {r.stderr!r}")
     r = run(["systemd-analyze", "security", "--offline=true", "--threshold=30", f"--root={stage}",
-             str(unit)])
+             "rig.service"])
     m = re.search(r"Overall exposure level for \S+: (\d+\.\d+) (\w+)", r.stdout)
     level = float(m.group(1)) if m else 99.0
     print(f"     systemd-analyze security: {m.group(0) if m else r.stdout[-300:]}")
-    expect(r.returncode == 0 and level <= MAX_EXPOSURE,
+    expect(r.returncode == 0 and level <= MAX_EXPOSURE and r.stderr == "",
            f"systemd-analyze security exits 0 ({r.returncode}), exposure {level} <= {MAX_EXPOSURE}"
-           f"{': ' + r.stderr.strip() if r.stderr else ''}")
+           f"{', stderr: ' + r.stderr.strip() if r.stderr else ''}")
 
 
 def check_prefix(build: str, prefix: str) -> None:
@@ -99,11 +118,13 @@ def check_prefix(build: str, prefix: str) -> None:
     with tempfile.TemporaryDirectory(prefix="rig-stage-") as tmp:
         stage = pathlib.Path(tmp)
         install(build, stage, prefix)
-        unit = staged(stage, f"{prefix}/lib/systemd/system/rig.service")
-        expect(unit.is_file(), f"unit {unit.relative_to(stage)} installed")
+        unit_path = f"{prefix.rstrip('/')}/lib/systemd/system/rig.service"
+        unit = staged(stage, unit_path)
+        expect(unit.is_file(), f"unit {unit_path} installed")
         if not unit.is_file():
             return
         config = check_unit_paths(stage, unit, prefix)
+        link_unit(stage, unit_path)
         check_systemd_analyze(stage, unit)
         rule = staged(stage, f"{prefix}/{UDEV_RULE}")
         lines = [l for l in rule.read_text().splitlines() if l and not l.startswith("#")] \
