@@ -5,9 +5,9 @@ DESTDIR stage, for --prefix /usr and /opt/rig, and what the installed service ne
 For each prefix: the staged unit's ExecStart binary, its --config file and its Documentation=
 file exist in the stage; `systemd-analyze verify` of the staged unit exits 0 with an empty
 stderr; `systemd-analyze security --offline=true --threshold=30` exits 0 and rates it at most
-3.0 (both by unit name under --root=STAGE; the /opt unit linked into STAGE/etc/systemd/system as
-`systemctl link` does); the udev rule holds exactly the cpu_dma_latency line; no vcan file is installed; the staged
-`rig check` accepts the staged configuration. Then `--component vcan` installs the four vcan
+3.0 (both by unit name under --root=STAGE; the /opt unit linked into STAGE/etc/systemd/system
+as `systemctl link` does); the udev rule holds exactly the cpu_dma_latency line; no vcan file
+is installed; the staged `rig check` accepts the staged configuration. Then `--component vcan` installs the four vcan
 files and nothing else. Everything offline: PID 1 need not be systemd.
 
     install_staging_test.py BUILD_DIR
