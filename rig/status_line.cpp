@@ -44,7 +44,7 @@ std::string compact_count(std::uint64_t n) {
     ++unit;
   }
   const std::uint64_t whole = n / scale;
-  char buf[16];
+  char buf[32];  // at most 5 characters are written; the rest quiets -Wformat-truncation
   if (whole >= 100) {
     std::snprintf(buf, sizeof buf, "%llu%c", ull(whole), kSuffix[unit]);
   } else {
