@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "rig/json_text.h"
+#include "rig/status_line.h"
 #include "rig/vehicle_fault_text.h"
 
 namespace rig {
@@ -90,19 +91,19 @@ std::string write_failures_json(const std::vector<io::WriteFailures>& failures) 
 std::string summary_line(const Executive& e) {
   const auto& l = e.lateness();
   const auto& c = e.compute();
-  // The CAN bus when it is not simply up (error-passive, bus-off, down), so that a bench sees it.
-  const io::BusState bus = e.io_counters().bus_state;
-  const std::string can = bus == io::BusState::kDisabled || bus == io::BusState::kUp
-                              ? std::string()
-                              : std::string(", CAN ") + io::bus_state_name(bus);
-  return fmt(
-      "cycles %llu, misses %llu, sim %.3f s, lateness p50/p99/p99.9/max %.1f/%.1f/%.1f/%.1f us, "
-      "compute p50/p99/max %.1f/%.1f/%.1f us%s",
-      ull(e.cycles()), ull(e.deadline_misses()), e.sim_time_s(),
-      static_cast<double>(l.quantile(0.5)) / 1e3, static_cast<double>(l.quantile(0.99)) / 1e3,
-      static_cast<double>(l.quantile(0.999)) / 1e3, static_cast<double>(l.max()) / 1e3,
-      static_cast<double>(c.quantile(0.5)) / 1e3, static_cast<double>(c.quantile(0.99)) / 1e3,
-      static_cast<double>(c.max()) / 1e3, can.c_str());
+  StatusFigures f;
+  f.cycles = e.cycles();
+  f.misses = e.deadline_misses();
+  f.sim_time_s = e.sim_time_s();
+  f.lateness_p50_ns = l.quantile(0.5);
+  f.lateness_p99_ns = l.quantile(0.99);
+  f.lateness_p999_ns = l.quantile(0.999);
+  f.lateness_max_ns = l.max();
+  f.compute_p50_ns = c.quantile(0.5);
+  f.compute_p99_ns = c.quantile(0.99);
+  f.compute_max_ns = c.max();
+  f.can = e.io_counters();
+  return status_line(f);
 }
 
 std::string summary_report(const Executive& e, const SummaryExtras& x) {

@@ -20,7 +20,7 @@ struct SummaryExtras {
   std::vector<io::WriteFailures> write_failures;  ///< outputs that lost data (a full disk)
 };
 
-/// "cycles 12000, misses 3, lateness p50/p99/p99.9/max 12/40/80/210 us, compute ..."
+/// The status line (rig/status_line.h) of the executive's figures so far.
 std::string summary_line(const Executive& exec);
 /// Multi-line report including a log-scale lateness histogram.
 std::string summary_report(const Executive& exec, const SummaryExtras& extras);
