@@ -55,6 +55,8 @@
 #include <vector>
 
 #include "io/can/dbc/dbc_database.h"
+#include "io/can/e2e/crc.h"
+#include "io/can/e2e/e2e_profile.h"
 #include "io/can/mapping/checksum.h"
 #include "io/config/strict_table.h"
 #include "model/signals.h"
@@ -80,9 +82,12 @@ struct CounterSpec {
 };
 
 struct ChecksumSpec {
-  std::size_t dbc_signal = 0;  ///< 8-bit signal holding the checksum
+  std::size_t dbc_signal = 0;  ///< the signal holding the checksum (unless `position`)
   ChecksumType type = ChecksumType::kCrc8SaeJ1850;
   std::vector<std::uint8_t> bytes;  ///< covered byte indices, in order
+  e2e::Crc crc{};                   ///< kCrc8SaeJ1850 (its preset) and kCrc
+  /// `position`: the CRC's first byte; width / 8 bytes, most significant first (no DBC signal).
+  std::optional<std::uint32_t> position_byte{};
 };
 
 /// One mapped message (either direction).
@@ -91,8 +96,9 @@ struct MessageBinding {
   std::vector<SignalBinding> signals;
   std::optional<CounterSpec> counter;
   std::optional<ChecksumSpec> checksum;
-  std::int64_t timeout_ns = 0;  ///< RX only
-  std::int64_t period_ns = 0;   ///< TX only (GenMsgCycleTime), > 0
+  std::optional<e2e::E2eSpec> e2e;  ///< AUTOSAR E2E (docs/e2e.md); excludes counter and checksum
+  std::int64_t timeout_ns = 0;      ///< RX only
+  std::int64_t period_ns = 0;       ///< TX only (GenMsgCycleTime), > 0
 };
 
 struct CanMapping {
