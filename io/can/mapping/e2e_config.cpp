@@ -48,9 +48,9 @@ std::uint32_t offset(config::StrictTable& t, std::string_view key, long long fal
   const long long o = t.integer(key, fallback);
   const long long frame_bits = 8LL * m.length_bytes;
   if (o < 0 || o + bits > frame_bits) {
-    throw t.error(key, std::string(key) + " = " + std::to_string(o) + ": a " +
-                           std::to_string(bits) + "-bit field there is outside message " + m.name +
-                           " (" + std::to_string(m.length_bytes) + " bytes)");
+    throw t.error(key, std::string(key) + " = " + std::to_string(o) + ": the " +
+                           std::to_string(bits) + "-bit field there lies outside message " +
+                           m.name + " (" + std::to_string(m.length_bytes) + " bytes)");
   }
   if (o % step != 0)
     throw t.error(key, std::string(key) + " must be a multiple of " + std::to_string(step));
