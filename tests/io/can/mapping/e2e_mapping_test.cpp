@@ -82,8 +82,8 @@ class E2eRx : public ::testing::Test {
   }
   mapping::RxResult feed(std::size_t i, const std::array<std::uint8_t, 64>& d, std::int64_t t) {
     const dbc::MessageDef& m = config_.database.messages[config_.mapping.rx[i].dbc_message];
-    return rx_.on_frame(m.id, false, m.is_fd() ? mapping::FrameFormat::kFd
-                                               : mapping::FrameFormat::kClassic,
+    return rx_.on_frame(m.id, false,
+                        m.is_fd() ? mapping::FrameFormat::kFd : mapping::FrameFormat::kClassic,
                         d.data(), m.length_bytes, t, signals_, counters_);
   }
 
