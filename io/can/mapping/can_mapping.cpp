@@ -9,6 +9,7 @@
 
 #include "io/can/dbc/dbc_parser.h"
 #include "io/can/dbc/signal_codec.h"
+#include "io/can/mapping/restbus.h"
 
 namespace rig::io::can::mapping {
 namespace {
@@ -129,14 +130,7 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
   MessageBinding b;
   b.dbc_message = message_index(t, db);
   const dbc::MessageDef& m = db.messages[b.dbc_message];
-  if (auto c = t.optional_table("counter")) b.counter = parse_counter(std::move(*c), m);
-  if (auto c = t.optional_table("checksum")) b.checksum = parse_checksum(std::move(*c), m);
-  if (b.counter && b.checksum &&
-      share_bits(m.signals[b.counter->dbc_signal], m.signals[b.checksum->dbc_signal])) {
-    throw t.error("checksum", "counter " + m.signals[b.counter->dbc_signal].name +
-                                  " and checksum " + m.signals[b.checksum->dbc_signal].name +
-                                  " share bits of message " + m.name);
-  }
+  parse_protection(t, m, b);
   if (rx) {
     const double default_ms = 3.0 * m.cycle_time_ms;
     if (!t.has("timeout_ms") && m.cycle_time_ms == 0) {
@@ -195,6 +189,17 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
 
 }  // namespace
 
+void parse_protection(config::StrictTable& t, const dbc::MessageDef& m, MessageBinding& b) {
+  if (auto c = t.optional_table("counter")) b.counter = parse_counter(std::move(*c), m);
+  if (auto c = t.optional_table("checksum")) b.checksum = parse_checksum(std::move(*c), m);
+  if (b.counter && b.checksum &&
+      share_bits(m.signals[b.counter->dbc_signal], m.signals[b.checksum->dbc_signal])) {
+    throw t.error("checksum", "counter " + m.signals[b.counter->dbc_signal].name +
+                                  " and checksum " + m.signals[b.checksum->dbc_signal].name +
+                                  " share bits of message " + m.name);
+  }
+}
+
 CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& database) {
   CanMapping mapping;
   if (table.has("rx")) {
@@ -205,6 +210,7 @@ CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& da
     for (config::StrictTable& t : table.tables("tx", database.messages.size()))
       mapping.tx.push_back(parse_message(t, database, false));
   }
+  expand_restbus(table, database, mapping);  // after rx and tx: it skips or refuses theirs
   // One message per direction at most; a model input bound once.
   for (std::size_t i = 0; i < mapping.rx.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
