@@ -9,6 +9,7 @@
 
 #include "io/can/dbc/dbc_parser.h"
 #include "io/can/dbc/signal_codec.h"
+#include "io/can/mapping/protection_config.h"
 #include "io/can/mapping/restbus.h"
 
 namespace rig::io::can::mapping {
@@ -43,75 +44,6 @@ double named_scale(config::StrictTable& t) {
   return 1.0;
 }
 
-/// The bits a signal occupies in a frame, as a 64-byte mask.
-std::array<std::uint8_t, 64> bit_mask(const dbc::SignalDef& s) {
-  std::array<std::uint8_t, 64> mask{};
-  dbc::SignalCodec(s).insert_raw(~std::uint64_t{0}, mask.data());
-  return mask;
-}
-
-bool share_bits(const dbc::SignalDef& a, const dbc::SignalDef& b) {
-  const auto ma = bit_mask(a);
-  const auto mb = bit_mask(b);
-  for (std::size_t i = 0; i < ma.size(); ++i) {
-    if ((ma[i] & mb[i]) != 0) return true;
-  }
-  return false;
-}
-
-CounterSpec parse_counter(config::StrictTable t, const dbc::MessageDef& m) {
-  CounterSpec c;
-  c.dbc_signal = signal_index(t, "signal", m);
-  const auto& s = m.signals[c.dbc_signal];
-  const double max_modulus =
-      s.length_bits >= 32 ? 4294967295.0 : std::ldexp(1.0, static_cast<int>(s.length_bits));
-  if (s.value_type != dbc::ValueType::kInteger || s.mux_role == dbc::MuxRole::kMultiplexed)
-    throw t.error("signal", "counter must be an integer signal present in every frame");
-  c.modulus =
-      static_cast<std::uint32_t>(t.integer_in("modulus", 2, static_cast<long long>(max_modulus)));
-  c.max_step = static_cast<std::uint32_t>(t.integer_in("max_step", 1, 1, c.modulus - 1LL));
-  c.unlatch_steps = static_cast<std::uint32_t>(t.integer_in("unlatch_steps", 1, 1, 1000));
-  t.finish();
-  return c;
-}
-
-ChecksumSpec parse_checksum(config::StrictTable t, const dbc::MessageDef& m) {
-  ChecksumSpec c;
-  c.dbc_signal = signal_index(t, "signal", m);
-  const auto& s = m.signals[c.dbc_signal];
-  if (s.length_bits != 8 || s.value_type != dbc::ValueType::kInteger ||
-      s.mux_role == dbc::MuxRole::kMultiplexed) {
-    throw t.error("signal", "checksum signal " + s.name + " must be a plain 8-bit integer");
-  }
-  const std::string type = t.choice("type", "crc8_sae_j1850", {"crc8_sae_j1850", "xor"});
-  c.type = type == "xor" ? ChecksumType::kXor : ChecksumType::kCrc8SaeJ1850;
-  // Bytes occupied by the checksum signal itself (Intel or Motorola, 8 bits: 1 or 2 bytes).
-  const dbc::SignalCodec codec(s);
-  std::uint8_t own[64] = {};
-  codec.insert_raw(0xFF, own);
-  if (t.has("bytes")) {
-    // At most one entry per byte of the message: the covered bytes are gathered on the stack.
-    bool listed[64] = {};
-    for (const long long b : t.integers("bytes", m.length_bytes)) {
-      if (b < 0 || b >= m.length_bytes) {
-        throw t.error("bytes", "byte index " + std::to_string(b) + " is outside message " + m.name +
-                                   " (" + std::to_string(m.length_bytes) + " bytes)");
-      }
-      const auto i = static_cast<std::size_t>(b);
-      if (own[i] != 0) throw t.error("bytes", "covered bytes include the checksum itself");
-      if (listed[i]) throw t.error("bytes", "byte " + std::to_string(i) + " is listed twice");
-      listed[i] = true;
-      c.bytes.push_back(static_cast<std::uint8_t>(b));
-    }
-  } else {
-    for (std::uint32_t b = 0; b < m.length_bytes; ++b) {
-      if (own[b] == 0) c.bytes.push_back(static_cast<std::uint8_t>(b));
-    }
-  }
-  t.finish();
-  return c;
-}
-
 /// TX `invalid`: a raw bit pattern of the signal (0 .. 2^bits - 1; TOML integers are signed 64
 /// bit, so a 64-bit signal takes up to 2^63 - 1).
 std::uint64_t invalid_raw(config::StrictTable& t, const dbc::SignalDef& s) {
@@ -130,7 +62,10 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
   MessageBinding b;
   b.dbc_message = message_index(t, db);
   const dbc::MessageDef& m = db.messages[b.dbc_message];
-  parse_protection(t, m, b);
+  const Protection protection = read_protection(t, m);
+  b.counter = protection.counter;
+  b.checksum = protection.checksum;
+  b.e2e = protection.e2e;
   if (rx) {
     const double default_ms = 3.0 * m.cycle_time_ms;
     if (!t.has("timeout_ms") && m.cycle_time_ms == 0) {
@@ -170,12 +105,7 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
       if (rx) sb.fallback = st.number("fallback", 0.0);
       if (!rx && st.has("invalid")) sb.invalid_raw = invalid_raw(st, s);
     }
-    if (b.counter && b.counter->dbc_signal == sb.dbc_signal) {
-      throw st.error("dbc", "signal " + s.name + " is the alive counter, it cannot be mapped");
-    }
-    if (b.checksum && b.checksum->dbc_signal == sb.dbc_signal) {
-      throw st.error("dbc", "signal " + s.name + " is the checksum, it cannot be mapped");
-    }
+    check_not_protected(st, m, protection, sb.dbc_signal);
     for (const auto& other : b.signals) {
       if (other.dbc_signal == sb.dbc_signal)
         throw st.error("dbc", "signal " + s.name + " mapped twice");
@@ -188,17 +118,6 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
 }
 
 }  // namespace
-
-void parse_protection(config::StrictTable& t, const dbc::MessageDef& m, MessageBinding& b) {
-  if (auto c = t.optional_table("counter")) b.counter = parse_counter(std::move(*c), m);
-  if (auto c = t.optional_table("checksum")) b.checksum = parse_checksum(std::move(*c), m);
-  if (b.counter && b.checksum &&
-      share_bits(m.signals[b.counter->dbc_signal], m.signals[b.checksum->dbc_signal])) {
-    throw t.error("checksum", "counter " + m.signals[b.counter->dbc_signal].name +
-                                  " and checksum " + m.signals[b.checksum->dbc_signal].name +
-                                  " share bits of message " + m.name);
-  }
-}
 
 CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& database) {
   CanMapping mapping;

@@ -12,6 +12,11 @@
 ///     counter = { signal = "EPS_AliveCounter", modulus = 16, max_step = 1 }     # optional
 ///                                       # (+ unlatch_steps = 1: see below)
 ///     checksum = { signal = "EPS_Checksum", type = "crc8_sae_j1850", bytes = [1, 2, 3] }  # opt.
+///     # or a generic CRC (width 8/16/32; `signal`, or `position` = first byte, MSB first):
+///     # checksum = { type = "crc", width, poly, init, refin, refout, xorout, bytes, position }
+///     # or, instead of counter and checksum, AUTOSAR E2E (docs/e2e.md):
+///     # e2e = { profile = "P01" | "P02" | "P04" | "P05", data_id, data_id_mode, data_id_list,
+///     #         crc_offset_bits, counter_offset_bits, max_delta_counter }
 ///     [[rx.signal]]
 ///     dbc = "EPS_MotorTorque"           # SG_ name in that message
 ///     model = "assist_torque_nm"        # model::signal_by_name
@@ -41,7 +46,9 @@
 /// Named conversions (model = dbc * scale): "none", "deg_to_rad", "kph_to_mps", "bar_to_pa",
 /// "rpm_to_radps", "percent_to_ratio". TX uses the inverse: dbc = (model - offset) / scale.
 /// Unmapped TX signals are sent at their GenSigStartValue. Checksum `bytes` default to every
-/// byte of the message except those of the checksum signal; the checksum signal must be 8 bits.
+/// byte of the message except those of the checksum; the checksum signal must be 8 bits (for
+/// type "crc": `width` bits). `counter`, `checksum` and `e2e` are read by read_protection
+/// (protection_config.h); E2E keys, defaults and counters: docs/e2e.md.
 /// Given, each byte at most once (so at most the message's length, 64 at most for CAN FD).
 /// The alive counter must advance by 1..max_step (mod modulus) per frame; a repeated (frozen) or
 /// jumping counter is a failure that latches the message: its frames are rejected until the
@@ -58,6 +65,8 @@
 #include <vector>
 
 #include "io/can/dbc/dbc_database.h"
+#include "io/can/e2e/crc.h"
+#include "io/can/e2e/e2e_profile.h"
 #include "io/can/mapping/checksum.h"
 #include "io/config/strict_table.h"
 #include "model/signals.h"
@@ -83,9 +92,12 @@ struct CounterSpec {
 };
 
 struct ChecksumSpec {
-  std::size_t dbc_signal = 0;  ///< 8-bit signal holding the checksum
+  std::size_t dbc_signal = 0;  ///< the signal holding the checksum (unless `position`)
   ChecksumType type = ChecksumType::kCrc8SaeJ1850;
   std::vector<std::uint8_t> bytes;  ///< covered byte indices, in order
+  e2e::Crc crc{};                   ///< kCrc8SaeJ1850 (its preset) and kCrc
+  /// `position`: the CRC's first byte; width / 8 bytes, most significant first (no DBC signal).
+  std::optional<std::uint32_t> position_byte{};
 };
 
 /// One mapped message (either direction).
@@ -94,8 +106,9 @@ struct MessageBinding {
   std::vector<SignalBinding> signals;
   std::optional<CounterSpec> counter;
   std::optional<ChecksumSpec> checksum;
-  std::int64_t timeout_ns = 0;  ///< RX only
-  std::int64_t period_ns = 0;   ///< TX only (GenMsgCycleTime), > 0
+  std::optional<e2e::E2eSpec> e2e;  ///< AUTOSAR E2E (docs/e2e.md); excludes counter and checksum
+  std::int64_t timeout_ns = 0;      ///< RX only
+  std::int64_t period_ns = 0;       ///< TX only (GenMsgCycleTime), > 0
 };
 
 struct CanMapping {
@@ -110,10 +123,6 @@ struct CanConfig {
   dbc::Database database;
   CanMapping mapping;
 };
-
-/// Reads a message table's protection (`counter`, `checksum`) into `b`: the one reading shared
-/// by [[rx]], [[tx]] and [[restbus.message]] (does not call finish() on `t`).
-void parse_protection(config::StrictTable& t, const dbc::MessageDef& m, MessageBinding& b);
 
 /// Reads the mapping tables `rx`, `tx` and `restbus` from `table` against `database` (does not read
 /// the `dbc` key and does not call finish() on `table`).

@@ -1,31 +1,16 @@
 #include "io/can/mapping/checksum.h"
 
-#include <array>
+#include "io/can/e2e/crc.h"
 
 namespace rig::io::can::mapping {
 namespace {
 
-/// Table of the MSB-first CRC-8 with polynomial 0x1D (x^8 + x^4 + x^3 + x^2 + 1).
-constexpr std::array<std::uint8_t, 256> make_crc8_table() {
-  std::array<std::uint8_t, 256> table{};
-  for (unsigned i = 0; i < 256; ++i) {
-    unsigned crc = i;
-    for (int bit = 0; bit < 8; ++bit) {
-      crc = (crc & 0x80u) != 0 ? ((crc << 1) ^ 0x1Du) : (crc << 1);
-    }
-    table[i] = static_cast<std::uint8_t>(crc & 0xFFu);
-  }
-  return table;
-}
-
-constexpr std::array<std::uint8_t, 256> kCrc8Table = make_crc8_table();
+constexpr e2e::Crc kCrc8SaeJ1850(e2e::presets::kCrc8SaeJ1850);
 
 }  // namespace
 
 std::uint8_t crc8_sae_j1850(const std::uint8_t* data, std::size_t len) noexcept {
-  std::uint8_t crc = 0xFF;
-  for (std::size_t i = 0; i < len; ++i) crc = kCrc8Table[static_cast<std::uint8_t>(crc ^ data[i])];
-  return static_cast<std::uint8_t>(crc ^ 0xFF);
+  return static_cast<std::uint8_t>(kCrc8SaeJ1850.compute(data, len));
 }
 
 std::uint8_t xor8(const std::uint8_t* data, std::size_t len) noexcept {

@@ -1,6 +1,10 @@
 #include "io/can/mapping/restbus.h"
 
+#include "io/can/dbc/signal_codec.h"
+#include "io/can/mapping/protection_config.h"
+
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -65,7 +69,7 @@ std::vector<MessageBinding> node_messages(config::StrictTable& t, const std::str
   return out;
 }
 
-/// [[restbus.message]]: a message's protection, read as for a [[tx]].
+/// [[restbus.message]]: a message's protection (counter, checksum, e2e), read as for a [[tx]].
 void read_overrides(config::StrictTable& t, const std::string& node, const dbc::Database& db,
                     std::vector<MessageBinding>& sent) {
   if (!t.has("message")) return;
@@ -83,9 +87,23 @@ void read_overrides(config::StrictTable& t, const std::string& node, const dbc::
     const auto k = static_cast<std::size_t>(it - sent.begin());
     if (seen[k]) throw mt.error("name", "message " + name + " is given twice");
     seen[k] = true;
-    parse_protection(mt, db.messages[it->dbc_message], *it);
+    Protection p = read_protection(mt, db.messages[it->dbc_message]);
+    it->counter = std::move(p.counter);
+    it->checksum = std::move(p.checksum);
+    it->e2e = std::move(p.e2e);
     mt.finish();
   }
+}
+
+/// True if DBC signal `k` of `m` shares bits with what b's protection writes.
+bool is_protected(const MessageBinding& b, const dbc::MessageDef& m, std::size_t k) {
+  const auto written = protection_mask(Protection{b.counter, b.checksum, b.e2e}, m);
+  std::array<std::uint8_t, 64> mine{};
+  dbc::SignalCodec(m.signals[k]).insert_raw(~std::uint64_t{0}, mine.data());
+  for (std::size_t i = 0; i < mine.size(); ++i) {
+    if ((mine[i] & written[i]) != 0) return true;
+  }
+  return false;
 }
 
 /// One `set` entry: a constant (number) or a model signal (string), converted as "none".
@@ -119,10 +137,9 @@ void read_set(config::StrictTable& t, const std::string& node, const dbc::Databa
       found = true;
       SignalBinding sb = value;
       sb.dbc_signal = static_cast<std::size_t>(s - m.signals.data());
-      if ((b.counter && b.counter->dbc_signal == sb.dbc_signal) ||
-          (b.checksum && b.checksum->dbc_signal == sb.dbc_signal)) {
-        throw set.error(key, "signal " + key + " is the counter or checksum of " + m.name +
-                                 ", it cannot be set");
+      if (is_protected(b, m, sb.dbc_signal)) {
+        throw set.error(key, "signal " + key + " is the counter, checksum or E2E field of " +
+                                 m.name + ", it cannot be set");
       }
       b.signals.push_back(sb);
     }

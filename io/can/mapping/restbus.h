@@ -9,7 +9,8 @@
 ///     set = { GW_IgnitionState = 2,      # optional: a number = a physical constant,
 ///             GW_VehicleSpeed = "vehicle_speed_mps" }  # a string = a model signal (as a
 ///                                        # [[tx.signal]] with convert = "none")
-///     [[restbus.message]]                # optional, per message: its protection
+///     [[restbus.message]]                # optional, per message: its protection (counter,
+///                                        #   checksum or e2e, as in a [[tx]])
 ///     name = "GW_Engine"
 ///     counter = { signal = "GW_EngineCounter", modulus = 16 }
 ///     checksum = { signal = "GW_EngineCrc", type = "crc8_sae_j1850" }
@@ -19,7 +20,7 @@
 /// without a cycle time (or 0) is not sent: one warning per node names them all. A message
 /// also in [[tx]] is left to the [[tx]]. Errors (file:line): an unknown node (the DBC's nodes
 /// listed), a node twice, a node that sends nothing, a message also in [[rx]], a `set` signal in
-/// none of the messages sent, an unknown model signal, a `set` of a counter or checksum, a
+/// none of the messages sent, an unknown model signal, a `set` of a protected signal, a
 /// [[restbus.message]] that is not one the restbus sends or is given twice.
 
 #include "io/can/dbc/dbc_database.h"

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "io/can/mapping/protection.h"
+
 namespace rig::io::can::mapping {
 
 RxProcessor::RxProcessor(const CanConfig& config) {
@@ -18,12 +20,18 @@ RxProcessor::RxProcessor(const CanConfig& config) {
               .bound = {},
               .counter = b.counter,
               .checksum = b.checksum,
+              .e2e = b.e2e,
               .timeout_ns = b.timeout_ns};
     if (b.counter) {
       m.sequence =
           SequenceChecker(SequenceParams{.modulus = b.counter->modulus,
                                          .max_delta = b.counter->max_step,
                                          .good_steps_to_unlatch = b.counter->unlatch_steps});
+    }
+    if (b.e2e) {  // the profile's counter goes through the same checker
+      m.sequence = SequenceChecker(SequenceParams{.modulus = e2e::counter_modulus(b.e2e->profile),
+                                                  .max_delta = b.e2e->max_delta_counter,
+                                                  .good_steps_to_unlatch = 1});
     }
     for (const SignalBinding& sb : b.signals) {
       const dbc::SignalDef& s = def.signals[sb.dbc_signal];
@@ -53,19 +61,6 @@ void RxProcessor::reset(std::int64_t now_ns, model::Signals& signals) {
     m.timeout_counted = false;
     m.sequence.reset();
   }
-}
-
-bool RxProcessor::checksum_ok(const Message& m, const std::uint8_t* data) noexcept {
-  const ChecksumSpec& c = *m.checksum;
-  // Gather the covered bytes in their configured order (at most 64, on the stack).
-  std::uint8_t covered[64];
-  std::size_t n = 0;
-  for (std::uint8_t b : c.bytes) {
-    if (n < sizeof covered) covered[n++] = data[b];
-  }
-  const std::uint8_t expected =
-      c.type == ChecksumType::kXor ? xor8(covered, n) : crc8_sae_j1850(covered, n);
-  return m.codec.signal(c.dbc_signal).extract_raw(data) == expected;
 }
 
 void RxProcessor::decode(Message& m, const std::uint8_t* data, model::Signals& signals,
@@ -119,10 +114,11 @@ RxResult RxProcessor::on_frame(std::uint32_t id, bool extended, FrameFormat form
     ++counters.bad_frames;
     return RxResult::kBadLength;
   }
-  if (m.checksum && !checksum_ok(m, data)) {
+  if (m.checksum && !checksum_ok(*m.checksum, m.codec, data)) {
     ++counters.checksum_failures;
     return RxResult::kChecksumFailure;
   }
+  if (m.e2e) return check_e2e(m, data, time_ns, signals, counters);
   if (m.counter) {
     const std::uint64_t raw = m.codec.signal(m.counter->dbc_signal).extract_raw(data);
     const auto value = raw > std::numeric_limits<std::uint32_t>::max()
@@ -133,10 +129,31 @@ RxResult RxProcessor::on_frame(std::uint32_t id, bool extended, FrameFormat form
       return RxResult::kCounterFailure;
     }
   }
+  accept(m, data, time_ns, signals, counters);
+  return RxResult::kAccepted;
+}
+
+void RxProcessor::accept(Message& m, const std::uint8_t* data, std::int64_t time_ns,
+                         model::Signals& signals, io::IoCounters& counters) noexcept {
   decode(m, data, signals, counters);
   m.last_ns = time_ns;
   m.timed_out = false;
   m.timeout_counted = false;
+}
+
+RxResult RxProcessor::check_e2e(Message& m, const std::uint8_t* data, std::int64_t time_ns,
+                                model::Signals& signals, io::IoCounters& counters) noexcept {
+  // A wrong Data ID is a wrong CRC (or, explicit in P01 NIBBLE and P04, a wrong field).
+  const e2e::CheckResult r = e2e::check(*m.e2e, data);
+  if (!r.crc_ok) {
+    ++counters.checksum_failures;
+    return RxResult::kChecksumFailure;
+  }
+  if (!accepted(m.sequence.check(r.counter))) {
+    ++counters.counter_failures;
+    return RxResult::kCounterFailure;
+  }
+  accept(m, data, time_ns, signals, counters);
   return RxResult::kAccepted;
 }
 

@@ -37,8 +37,8 @@ enum class RxResult : std::uint8_t {
   kBadLength,        ///< length differs from the DBC length (bad_frames)
   kRemoteFrame,      ///< a remote request on a mapped id: carries no data (bad_frames)
   kWrongFormat,      ///< CAN FD frame on a classic message's id or vice versa (bad_frames)
-  kChecksumFailure,  ///< checksum wrong (checksum_failures), frame rejected
-  kCounterFailure,   ///< counter repeated, skipped or latched (counter_failures), rejected
+  kChecksumFailure,  ///< checksum or E2E CRC/Data ID wrong (checksum_failures), rejected
+  kCounterFailure,   ///< counter (or E2E counter) repeated, skipped or latched (counter_failures)
 };
 
 class RxProcessor {
@@ -111,6 +111,7 @@ class RxProcessor {
     std::vector<Bound> bound;
     std::optional<CounterSpec> counter;
     std::optional<ChecksumSpec> checksum;
+    std::optional<e2e::E2eSpec> e2e;
     std::int64_t timeout_ns = 0;
     std::int64_t last_ns = 0;
     bool timed_out = true;
@@ -118,7 +119,10 @@ class RxProcessor {
     SequenceChecker sequence{};
   };
   void apply_fallback(Message& message, model::Signals& signals);
-  static bool checksum_ok(const Message& m, const std::uint8_t* data) noexcept;
+  static RxResult check_e2e(Message& m, const std::uint8_t* data, std::int64_t time_ns,
+                            model::Signals& signals, io::IoCounters& counters) noexcept;
+  static void accept(Message& m, const std::uint8_t* data, std::int64_t time_ns,
+                     model::Signals& signals, io::IoCounters& counters) noexcept;
   static void decode(Message& m, const std::uint8_t* data, model::Signals& signals,
                      io::IoCounters& counters) noexcept;
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/can/mapping/protection.h"
+
 namespace rig::io::can::mapping {
 
 TxScheduler::TxScheduler(const CanConfig& config) {
@@ -27,6 +29,7 @@ TxScheduler::TxScheduler(const CanConfig& config) {
               .next_page = 0,
               .counter = b.counter,
               .checksum = b.checksum,
+              .e2e = b.e2e,
               .counter_value = 0,
               .period_ns = b.period_ns,
               .next_due_ns = 0};
@@ -94,14 +97,10 @@ void TxScheduler::encode(std::size_t i, const model::Signals& signals, TxFrame& 
     m.codec.signal(m.counter->dbc_signal).insert_raw(m.counter_value, frame.data.data());
     m.counter_value = (m.counter_value + 1) % m.counter->modulus;
   }
-  if (m.checksum) {
-    const ChecksumSpec& c = *m.checksum;
-    std::uint8_t covered[64];
-    std::size_t n = 0;
-    for (std::uint8_t b : c.bytes) covered[n++] = frame.data[b];
-    const std::uint8_t sum =
-        c.type == ChecksumType::kXor ? xor8(covered, n) : crc8_sae_j1850(covered, n);
-    m.codec.signal(c.dbc_signal).insert_raw(sum, frame.data.data());
+  if (m.checksum) write_checksum(*m.checksum, m.codec, frame.data.data());
+  if (m.e2e) {  // the counter advances per send, over the profile's counter range
+    e2e::protect(*m.e2e, frame.data.data(), m.counter_value);
+    m.counter_value = (m.counter_value + 1) % e2e::counter_modulus(m.e2e->profile);
   }
 }
 

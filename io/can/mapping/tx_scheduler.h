@@ -93,6 +93,7 @@ class TxScheduler {
     std::size_t next_page = 0;
     std::optional<CounterSpec> counter;
     std::optional<ChecksumSpec> checksum;
+    std::optional<e2e::E2eSpec> e2e;
     std::uint32_t counter_value = 0;
     std::int64_t period_ns = 0;
     std::int64_t next_due_ns = 0;

@@ -57,12 +57,13 @@ std::string error_of(const std::string& body) {
 
 TEST(Restbus, ExampleSendsEveryCyclicGatewayMessageAtItsCycleTime) {
   const CanConfig c = load_can_config(kDir + "/ecu-mapping.toml");
-  ASSERT_EQ(c.mapping.tx.size(), 2u + 5u);  // ESC_Vehicle, SAS_Steering + five GW messages
-  const std::array<std::pair<const char*, std::int64_t>, 5> expected{{{"GW_Ignition", 10},
+  ASSERT_EQ(c.mapping.tx.size(), 2u + 6u);  // ESC_Vehicle, SAS_Steering + six GW messages
+  const std::array<std::pair<const char*, std::int64_t>, 6> expected{{{"GW_Ignition", 10},
                                                                       {"GW_VehicleMode", 20},
                                                                       {"GW_Engine", 50},
                                                                       {"GW_Body", 100},
-                                                                      {"GW_Time", 1000}}};
+                                                                      {"GW_Time", 1000},
+                                                                      {"GW_Chassis", 20}}};
   for (std::size_t k = 0; k < expected.size(); ++k) {
     const MessageBinding& b = c.mapping.tx[2 + k];  // after the [[tx]], in DBC order
     EXPECT_EQ(c.database.messages[b.dbc_message].name, expected[k].first);
@@ -83,6 +84,11 @@ TEST(Restbus, ExampleSendsEveryCyclicGatewayMessageAtItsCycleTime) {
   EXPECT_TRUE(find(c, "GW_Engine")->counter.has_value());
   EXPECT_FALSE(find(c, "GW_Engine")->checksum.has_value());
   EXPECT_FALSE(find(c, "GW_Body")->counter.has_value());
+  const MessageBinding* chassis = find(c, "GW_Chassis");  // e2e: read as for a [[tx]]
+  ASSERT_TRUE(chassis->e2e.has_value());
+  EXPECT_EQ(chassis->e2e->profile, e2e::Profile::kP01);
+  EXPECT_EQ(chassis->e2e->data_id, 0x0123u);
+  EXPECT_FALSE(chassis->counter.has_value());
   // set: a constant and a model signal (convert "none": scale 1, offset 0).
   const MessageBinding* mode = find(c, "GW_VehicleMode");
   ASSERT_EQ(mode->signals.size(), 2u);
@@ -127,6 +133,10 @@ TEST(Restbus, FramesCarryTheStartValuesRawTheSetValuesCountersAndChecksums) {
   EXPECT_EQ(f.data[1], 34);
   EXPECT_EQ(f.data[2], 56);
   EXPECT_EQ(f.data[3] | f.data[4] << 8, 2026);
+  tx.encode(tx_index(c, "GW_Chassis"), signals, f, counters);
+  EXPECT_EQ(f.data[2], 5);         // GW_ChassisStatus
+  EXPECT_EQ(f.data[3], 1);         // GW_ParkBrake
+  EXPECT_EQ(f.data[1] & 0x0F, 0);  // E2E P01 counter, first frame (its CRC: the python check)
   EXPECT_EQ(counters.out_of_range, 0u);
 }
 
@@ -147,6 +157,7 @@ TEST(Restbus, SchedulerSendsEachMessageAtItsPeriod) {
   EXPECT_EQ(sends[512], 40);   // 50 ms
   EXPECT_EQ(sends[640], 20);   // 100 ms
   EXPECT_EQ(sends[992], 2);    // 1000 ms
+  EXPECT_EQ(sends[704], 100);  // 20 ms, E2E P01
   EXPECT_EQ(sends[416], 200);  // [[tx]] ESC_Vehicle, the same scheduler
 }
 
@@ -192,7 +203,7 @@ TEST(Restbus, NodeAloneSendsStartValuesAndTxWins) {
   const CanConfig c = load_can_config(
       write_mapping("[[tx]]\nmessage = \"GW_Body\"\n[[tx.signal]]\ndbc = \"GW_Odometer\"\n"
                     "constant = 7.5\n[[restbus]]\nnode = \"GW\"\n"));
-  ASSERT_EQ(c.mapping.tx.size(), 5u);  // GW_Body once: from the [[tx]]
+  ASSERT_EQ(c.mapping.tx.size(), 6u);  // GW_Body once: from the [[tx]]
   EXPECT_EQ(c.database.messages[c.mapping.tx[0].dbc_message].name, "GW_Body");
   EXPECT_EQ(c.mapping.tx[0].signals.size(), 1u);
   for (std::size_t i = 1; i < c.mapping.tx.size(); ++i) {
@@ -229,11 +240,13 @@ TEST(Restbus, ErrorsNameTheLineAndWhatIsWrong) {
   EXPECT_THAT(error_of("[[restbus]]\nnode = \"GW\"\n[[restbus.message]]\nname = \"GW_Engine\"\n"
                        "[[restbus.message]]\nname = \"GW_Engine\"\n"),
               HasSubstr("message GW_Engine is given twice"));
-  EXPECT_THAT(error_of("[[restbus]]\nnode = \"GW\"\nset = { GW_IgnCounter = 3 }\n"
-                       "[[restbus.message]]\nname = \"GW_Ignition\"\n"
-                       "counter = { signal = \"GW_IgnCounter\" }\n"),
-              HasSubstr("[set] GW_IgnCounter: signal GW_IgnCounter is the counter or checksum of "
-                        "GW_Ignition, it cannot be set"));
+  EXPECT_THAT(
+      error_of("[[restbus]]\nnode = \"GW\"\nset = { GW_IgnCounter = 3 }\n"
+               "[[restbus.message]]\nname = \"GW_Ignition\"\n"
+               "counter = { signal = \"GW_IgnCounter\" }\n"),
+      HasSubstr(
+          "[set] GW_IgnCounter: signal GW_IgnCounter is the counter, checksum or E2E field of "
+          "GW_Ignition, it cannot be set"));
   EXPECT_THAT(error_of("[[restbus]]\nnode = \"GW\"\n[[restbus.message]]\nname = \"GW_Ignition\"\n"
                        "counter = { signal = \"GW_IgnCounter\", modulus = 17 }\n"),
               HasSubstr("modulus"));

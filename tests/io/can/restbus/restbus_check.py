@@ -12,6 +12,8 @@ For every message of --node with a GenMsgCycleTime (canmatrix):
   or to the mapping's `set` value (a number; --value SIGNAL=X for one bound to a model signal);
 - the alive counter of its [[restbus.message]] advances by 1 modulo its modulus;
 - its checksum (crc8_sae_j1850 over crcmod, or xor) verifies over every other byte;
+- its `e2e` protection is valid for tests/io/can/e2e_reference.py (the AUTOSAR profiles in
+  Python, CRCs through crcmod) and its E2E counter advances by 1 modulo the profile's;
 
 and a message without a cycle time is never sent. One JSON line per message; exit 1 on any
 failure.
@@ -29,6 +31,9 @@ import tomllib
 
 import canmatrix.formats
 import crcmod
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
+import e2e_reference  # noqa: E402  (tests/io/can/e2e_reference.py)
 
 # CRC-8 SAE J1850: poly 0x1D, init 0xFF, xorout 0xFF (crcmod's initCrc is init ^ xorout).
 CRC8_SAE_J1850 = crcmod.mkCrcFun(0x11D, initCrc=0x00, rev=False, xorOut=0xFF)
@@ -56,6 +61,28 @@ def signal_byte(frame, name):
     return signal.start_bit // 8  # 8-bit Intel checksum signals: one byte
 
 
+def e2e_bits(cfg):
+    """The bits an E2E profile writes (Intel numbering), as e2e_reference lays them out."""
+    p, o = cfg["profile"], cfg.get("offset", 0)
+    if p == "P01":
+        crc, cnt = cfg.get("crc_offset_bits", 0), cfg.get("counter_offset_bits", 8)
+        bits = set(range(crc, crc + 8)) | set(range(cnt, cnt + 4))
+        return bits | (set(range(12, 16)) if cfg.get("data_id_mode") == "NIBBLE" else set())
+    if p == "P02":
+        return set(range(0, 12))
+    return set(range(o, o + (96 if p == "P04" else 24)))
+
+
+def check_e2e(frame, sends, cfg, fails):
+    modulus = e2e_reference.counter_modulus(cfg["profile"])
+    for k, (_, data) in enumerate(sends):
+        ok, counter = e2e_reference.check(dict(cfg, length=len(data)), bytearray(data))
+        if not ok or counter != k % modulus:
+            fails.append(f"{frame.name}: E2E {cfg['profile']} send {k}: valid {ok}, counter "
+                         f"{counter}, expected {k % modulus}")
+            return
+
+
 def check_message(frame, sends, spec, args, fails):
     period = int(frame.effective_cycle_time) // args.cycle_ms
     cycles = [c for c, _ in sends]
@@ -70,6 +97,11 @@ def check_message(frame, sends, spec, args, fails):
     counter = spec.get("counter")
     checksum = spec.get("checksum")
     skip = {x["signal"] for x in (counter, checksum) if x}
+    if "e2e" in spec:
+        bits = e2e_bits(spec["e2e"])
+        skip |= {sig.name for sig in frame.signals
+                 if bits & set(range(sig.start_bit, sig.start_bit + sig.size))}
+        check_e2e(frame, sends, spec["e2e"], fails)
     for k, (_, data) in enumerate(sends):
         decoded = frame.decode(data)
         for signal in frame.signals:

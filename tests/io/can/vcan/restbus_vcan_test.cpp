@@ -1,8 +1,9 @@
 // The restbus on vcan: the worked example's mapping (tests/io/can/restbus/ecu-mapping.toml)
 // stands in for the gateway GW of ecu.dbc. Every frame the bridge sends is logged with the loop
 // cycle that produced it (its per-cycle send count against candump's ordered recording), and an
-// independent python checker (canmatrix, crcmod) judges periods in cycles, start values,
-// counters and checksums. The VM is slow: nothing here depends on wall time.
+// independent python checker (canmatrix, crcmod, the E2E reference e2e_reference.py) judges
+// periods in cycles, start values, counters, checksums and the E2E P01 message. The VM is slow:
+// nothing here depends on wall time.
 #include <gtest/gtest.h>
 
 #include <time.h>
@@ -98,8 +99,8 @@ TEST(RestbusVcan, GatewayMessagesAtTheirCyclesWithStartValuesCountersChecksums) 
   }
   candump.terminate();
   ASSERT_EQ(frames.size(), c.frames_sent);
-  // 3 s: the two 10 ms [[tx]] (300 each) + GW at 10, 20, 50, 100, 1000 ms.
-  EXPECT_EQ(c.frames_sent, 2u * 300u + 300u + 150u + 60u + 30u + 3u);
+  // 3 s: the two 10 ms [[tx]] (300 each) + GW at 10, 20, 50, 100, 1000 ms and E2E at 20 ms.
+  EXPECT_EQ(c.frames_sent, 2u * 300u + 300u + 150u + 60u + 30u + 3u + 150u);
   const std::string log = std::string(RIG_BINARY_DIR) + "/vcan-out/restbus-sent.log";
   sh("mkdir -p " + std::string(RIG_BINARY_DIR) + "/vcan-out");
   {
