@@ -243,7 +243,7 @@ TEST(Restbus, ErrorsNameTheLineAndWhatIsWrong) {
   EXPECT_THAT(
       error_of("[[restbus]]\nnode = \"GW\"\nset = { GW_IgnCounter = 3 }\n"
                "[[restbus.message]]\nname = \"GW_Ignition\"\n"
-               "counter = { signal = \"GW_IgnCounter\" }\n"),
+               "counter = { signal = \"GW_IgnCounter\", modulus = 16 }\n"),
       HasSubstr(
           "[set] GW_IgnCounter: signal GW_IgnCounter is the counter, checksum or E2E field of "
           "GW_Ignition, it cannot be set"));
