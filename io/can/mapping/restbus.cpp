@@ -26,7 +26,7 @@ std::string joined(const std::vector<std::string>& names) {
 
 /// The node's name, checked against the DBC (BU_ nodes and BO_ transmitters).
 std::string node_name(config::StrictTable& t, const dbc::Database& db) {
-  const std::string node = t.string("node");
+  std::string node = t.string("node");
   const bool listed = std::find(db.nodes.begin(), db.nodes.end(), node) != db.nodes.end();
   const bool sends = std::any_of(db.messages.begin(), db.messages.end(),
                                  [&](const dbc::MessageDef& m) { return m.sender == node; });
@@ -69,6 +69,19 @@ std::vector<MessageBinding> node_messages(config::StrictTable& t, const std::str
   return out;
 }
 
+config::ConfigError not_sent(const config::StrictTable& mt, const std::string& name,
+                             const std::string& node) {
+  return mt.error("name", "'" + name + "' is not a message the restbus of node " + node +
+                              " sends (a cyclic message of " + node +
+                              ", neither in [[rx]] nor in [[tx]])");
+}
+
+config::ConfigError no_such_signal(const config::StrictTable& set, const std::string& key,
+                                   const std::string& node) {
+  return set.error(
+      key, "no signal '" + key + "' in the messages the restbus of node " + node + " sends");
+}
+
 /// [[restbus.message]]: a message's protection (counter, checksum, e2e), read as for a [[tx]].
 void read_overrides(config::StrictTable& t, const std::string& node, const dbc::Database& db,
                     std::vector<MessageBinding>& sent) {
@@ -79,18 +92,14 @@ void read_overrides(config::StrictTable& t, const std::string& node, const dbc::
     const auto it = std::find_if(sent.begin(), sent.end(), [&](const MessageBinding& b) {
       return db.messages[b.dbc_message].name == name;
     });
-    if (it == sent.end()) {
-      throw mt.error("name", "'" + name + "' is not a message the restbus of node " + node +
-                                 " sends (a cyclic message of " + node +
-                                 ", neither in [[rx]] nor in [[tx]])");
-    }
+    if (it == sent.end()) throw not_sent(mt, name, node);
     const auto k = static_cast<std::size_t>(it - sent.begin());
     if (seen[k]) throw mt.error("name", "message " + name + " is given twice");
     seen[k] = true;
     Protection p = read_protection(mt, db.messages[it->dbc_message]);
-    it->counter = std::move(p.counter);
+    it->counter = p.counter;
     it->checksum = std::move(p.checksum);
-    it->e2e = std::move(p.e2e);
+    it->e2e = p.e2e;
     mt.finish();
   }
 }
@@ -143,10 +152,7 @@ void read_set(config::StrictTable& t, const std::string& node, const dbc::Databa
       }
       b.signals.push_back(sb);
     }
-    if (!found) {
-      throw set.error(
-          key, "no signal '" + key + "' in the messages the restbus of node " + node + " sends");
-    }
+    if (!found) throw no_such_signal(set, key, node);
   }
   set.finish();
 }

@@ -38,9 +38,8 @@ std::size_t tx_index(const CanConfig& c, const std::string& name) {
 
 /// Writes a mapping (`dbc = ecu.dbc` + body), one file per test, and loads it.
 std::string write_mapping(const std::string& body) {
-  const std::string file = ::testing::TempDir() + "/rig_restbus_test_" +
-                           ::testing::UnitTest::GetInstance()->current_test_info()->name() +
-                           ".toml";
+  std::string file = ::testing::TempDir() + "/rig_restbus_test_" +
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".toml";
   std::ofstream out(file);
   out << "dbc = \"" << kDir << "/ecu.dbc\"\n" << body;
   return file;
