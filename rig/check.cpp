@@ -93,7 +93,10 @@ bool is_can_mapping(const FileContent& c) {
 }
 
 void check_can_mapping(const FileContent& c, std::ostream& /*notes*/) {
-  (void)io::can::mapping::load_can_config(c.path);
+  const auto config = io::can::mapping::load_can_config(c.path);
+  // As `rig run` shows them (make_io): e.g. restbus messages without a cycle time.
+  for (const auto& warning : config.mapping.warnings)
+    std::cerr << "rig: warning: " << warning << "\n";
 }
 
 // ---- DBC files: text whose first word is a DBC section keyword (VERSION, NS_, BU_, BO_, ...)

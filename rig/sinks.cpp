@@ -55,6 +55,7 @@ std::vector<std::unique_ptr<io::CycleIo>> make_io(const RigConfig& config,
   if (!options.can.empty() && !can_off) can.interface = options.can;
   io::can::mapping::CanConfig files = io::can::bridge::load_can_files(can);
   for (const auto& note : files.database.warnings) std::cerr << "rig: warning: " << note << "\n";
+  for (const auto& note : files.mapping.warnings) std::cerr << "rig: warning: " << note << "\n";
   check_can_routes(config, files);
   if (can_off) {
     std::cerr << "rig: warning: --can none: CAN is off although " << config.file.string()

@@ -10,6 +10,7 @@
 #include "io/can/dbc/dbc_parser.h"
 #include "io/can/dbc/signal_codec.h"
 #include "io/can/mapping/protection_config.h"
+#include "io/can/mapping/restbus.h"
 
 namespace rig::io::can::mapping {
 namespace {
@@ -128,6 +129,7 @@ CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& da
     for (config::StrictTable& t : table.tables("tx", database.messages.size()))
       mapping.tx.push_back(parse_message(t, database, false));
   }
+  expand_restbus(table, database, mapping);  // after rx and tx: it skips or refuses theirs
   // One message per direction at most; a model input bound once.
   for (std::size_t i = 0; i < mapping.rx.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {

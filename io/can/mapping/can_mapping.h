@@ -35,6 +35,9 @@
 ///     [[tx.signal]]
 ///     dbc = "VehicleSpeed"; model = "vehicle_speed_mps"; invalid = 0xFFFF   # optional
 ///
+///     [[restbus]]                       # every cyclic message a DBC node sends (restbus.h)
+///     node = "GW"; set = { GW_Ignition = 2, GW_Speed = "vehicle_speed_mps" }
+///
 /// TX `invalid` (optional, an integer raw value that fits the signal's bits, e.g. the DBC's SNA
 /// value) is sent, unclamped, while the model signal is flagged invalid (a timed-out input, or
 /// every model output after a vehicle fault held by [rig] on_vehicle_fault = "hold"); without
@@ -110,7 +113,9 @@ struct MessageBinding {
 
 struct CanMapping {
   std::vector<MessageBinding> rx;
-  std::vector<MessageBinding> tx;
+  std::vector<MessageBinding> tx;  ///< [[tx]], then the messages [[restbus]] expands into
+  /// `file:line: ...` notes (restbus messages not sent). Never printed here; the caller decides.
+  std::vector<std::string> warnings;
 };
 
 /// The DBC and the mapping that refers to it.
@@ -119,8 +124,8 @@ struct CanConfig {
   CanMapping mapping;
 };
 
-/// Reads the mapping tables `rx` and `tx` from `table` against `database` (does not read the
-/// `dbc` key and does not call finish() on `table`).
+/// Reads the mapping tables `rx`, `tx` and `restbus` from `table` against `database` (does not read
+/// the `dbc` key and does not call finish() on `table`).
 CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& database);
 
 /// Reads a mapping TOML file: its `dbc` key (relative path) is loaded with load_dbc.
