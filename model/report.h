@@ -25,6 +25,7 @@ struct WheelReport {
   double steer_angle_rad = 0;
   double brake_torque_nm = 0;
   double drive_torque_nm = 0;
+  double brake_pressure_pa = 0;  ///< applied wheel brake pressure (its circuit's or its own)
   // what the tire saw (model/tire's TireKinematics and the load of its characteristic): with
   // the road's mu and the deflections these reproduce force_x_n, force_y_n exactly
   double long_speed_mps = 0;    ///< contact point velocity along the tire's heading, v_x
@@ -48,6 +49,7 @@ struct UnitReport {
 
 struct SteeringReport {
   double wheel_angle_rad = 0;
+  double wheel_speed_radps = 0;
   double wheel_torque_nm = 0;  ///< driver hand torque
   double torsion_bar_torque_nm = 0;
   double rack_travel_m = 0;

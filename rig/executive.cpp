@@ -134,8 +134,10 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
   phases.end(io::Phase::kDriver);
   if (params_.stall_ms > 0 && loop.cycle == params_.stall_cycle) sleep_ms(params_.stall_ms);
   const model::StepStatus status = step_model();
+  fill_report();
   const std::int64_t model_end_ns = phases.end(io::Phase::kModel);
-  for (io::CycleIo* a : io_) a->transmit(model_end_ns, signals_);
+  const io::signals::CycleView view{signals_, report_};
+  for (io::CycleIo* a : io_) a->transmit(model_end_ns, view);
   phases.end(io::Phase::kOutputs);
   t.sim_time_s = model_.time_s();
 
@@ -177,6 +179,15 @@ model::StepStatus Executive::step_model() noexcept {
   return model::StepStatus::kVehicleFault;
 }
 
+/// The cycle's report with its validity (the model's state, or after a fault its last
+/// fault-free one, flagged invalid).
+void Executive::fill_report() noexcept {
+  model_.fill_report(report_);
+  report_.valid = fault_.kind == model::FaultKind::kNone ? 1 : 0;
+  report_.fault_kind = static_cast<std::int32_t>(fault_.kind);
+  report_.fault_unit = fault_.kind == model::FaultKind::kNone ? -1 : fault_.unit;
+}
+
 /// The event of a failed step, and whether the loop stops.
 StopReason Executive::after_fault(model::StepStatus status, const io::CycleTiming& t,
                                   std::int64_t end_ns) noexcept {
@@ -208,10 +219,7 @@ OverrunDecision Executive::handoff(io::CycleTiming& t, PhaseTimer& phases,
   io::Snapshot* slot = handoff_.claim(stop_requested_);
   if (slot != nullptr) {
     slot->signals = signals_;
-    model_.fill_report(slot->report);
-    slot->report.valid = fault_.kind == model::FaultKind::kNone ? 1 : 0;
-    slot->report.fault_kind = static_cast<std::int32_t>(fault_.kind);
-    slot->report.fault_unit = fault_.kind == model::FaultKind::kNone ? -1 : fault_.unit;
+    slot->report = report_;
     read_io_counters(slot->can);
   }
   end_ns = phases.end(io::Phase::kHandoff);

@@ -59,7 +59,8 @@ void write_outputs(const VehicleState& state, const VehicleInputs& in, const Veh
 
 namespace {
 
-void fill_wheel(const VehicleState& state, const VehicleWorkspace& work, int i, WheelReport& r) {
+void fill_wheel(const VehicleState& state, const VehicleInputs& in, const VehicleWorkspace& work,
+                int i, WheelReport& r) {
   const auto k = static_cast<std::size_t>(i);
   const WheelWork& w = work.wheels[k];
   r.spin_radps = state.spin_radps[k];
@@ -74,6 +75,7 @@ void fill_wheel(const VehicleState& state, const VehicleWorkspace& work, int i, 
   r.steer_angle_rad = w.steer_rad;
   r.brake_torque_nm = w.brake_torque_nm;
   r.drive_torque_nm = w.shaft_torque_nm;
+  r.brake_pressure_pa = in.brake_pressure_pa[k];
   r.long_speed_mps = w.out.tire.long_speed_mps;
   r.lat_speed_mps = w.out.tire.lat_speed_mps;
   r.rolling_radius_m = w.out.tire.rolling_radius_m;
@@ -98,8 +100,9 @@ void fill_report(const VehicleState& state, const VehicleInputs& in, const Vehic
   u.orientation_rad = {y(5), y(4), y(3)};
   u.wheel_count = work.wheel_count;
   for (int i = 0; i < work.wheel_count; ++i)
-    fill_wheel(state, work, i, u.wheels[static_cast<std::size_t>(i)]);
+    fill_wheel(state, in, work, i, u.wheels[static_cast<std::size_t>(i)]);
   report.steering.wheel_angle_rad = state.steering_y(0);
+  report.steering.wheel_speed_radps = state.steering_z(0);
   report.steering.wheel_torque_nm = in.hand_torque_cmd_nm;
   report.steering.torsion_bar_torque_nm = work.torsion_bar_torque_nm;
   report.steering.rack_travel_m = state.steering_y(1);
