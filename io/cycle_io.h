@@ -13,7 +13,8 @@
 namespace rig::io {
 
 /// A set of model inputs (bit: the input slot, model::index(signal) or a unit block slot), e.g.
-/// those an adapter feeds. Decided once at start (the rig's routing) and handed to each adapter at construction.
+/// those an adapter feeds. Decided once at start (the rig's routing) and handed to each adapter at
+/// construction.
 using InputSet = std::bitset<model::kSlotCount>;
 
 /// Something an adapter wants in the event log (a bus state change, a rate-limited report):

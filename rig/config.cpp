@@ -154,8 +154,7 @@ void locate_can_routes(const io::config::StrictTable& routing, const RoutingRequ
   for (std::size_t i = 0; i < requests.size(); ++i) {
     if (requests[i] != RouteRequest::kCan) continue;
     if (!c.can)
-      throw io::config::ConfigError(routes[i].at + ": " + routing.context() + " " +
-                                    routes[i].name +
+      throw io::config::ConfigError(routes[i].at + ": " + routing.context() + " " + routes[i].name +
                                     ": routed to \"can\", but there is no [can] section (no "
                                     "mapping receives it; add [can] or route it to \"driver\")");
     c.can_route_at[i] = routes[i];

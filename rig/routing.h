@@ -44,8 +44,8 @@ RoutingRequests read_routing(
 
 struct Routing {
   std::array<model::SignalSource, model::kSlotCount> source{};  ///< published, per input
-  io::InputSet can_inputs;                                        ///< what the CAN bridge feeds
-  io::InputSet driver_inputs;                                     ///< what the driver feeds
+  io::InputSet can_inputs;                                      ///< what the CAN bridge feeds
+  io::InputSet driver_inputs;                                   ///< what the driver feeds
   /// The assist torque: the ECU's (`assist_torque_nm = "can"`), else the built-in boost curve.
   bool assist_from_input = false;
 };

@@ -126,8 +126,8 @@ void fill_chosen_signals(const Snapshot& snapshot, std::span<const LcmSignal> ch
     const signals::Binding& b = chosen[i].binding;
     msg.value[i] = b.value(cycle);
     msg.valid[i] = b.valid(cycle) ? 1 : 0;
-    msg.source[i] = b.is_input() ? source_code(snapshot.signals.source[b.slot])
-                                 : rig::signals_t::SOURCE_MODEL;
+    msg.source[i] =
+        b.is_input() ? source_code(snapshot.signals.source[b.slot]) : rig::signals_t::SOURCE_MODEL;
   }
 }
 

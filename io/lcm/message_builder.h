@@ -27,8 +27,7 @@ struct StatusTotals {
 
 void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg);
 /// The enum's slots by their names, or (`chosen` not empty) the [lcm] signals in their order.
-void fill_signals(const Snapshot& snapshot, std::span<const LcmSignal> chosen,
-                  rig::signals_t& msg);
+void fill_signals(const Snapshot& snapshot, std::span<const LcmSignal> chosen, rig::signals_t& msg);
 void fill_status(const Snapshot& snapshot, const RunInfo& info, const StatusTotals& totals,
                  const TimingPercentiles& window, rig::rig_status_t& msg);
 

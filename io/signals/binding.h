@@ -26,7 +26,15 @@ struct CycleView {
 
 /// One value of a model::ModelReport: a field table row's source at an element.
 struct ReportReader {
-  enum class Group : std::uint8_t { kNone, kVehicle, kVehicleInt, kUnit, kWheel, kWheelFlag, kJoint };
+  enum class Group : std::uint8_t {
+    kNone,
+    kVehicle,
+    kVehicleInt,
+    kUnit,
+    kWheel,
+    kWheelFlag,
+    kJoint
+  };
   Group group = Group::kNone;
   std::uint8_t unit = 0;   ///< the unit (kUnit, kWheel, kWheelFlag)
   std::uint8_t index = 0;  ///< the wheel of that unit, or the joint

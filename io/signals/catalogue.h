@@ -66,8 +66,8 @@ class Catalogue {
   [[nodiscard]] std::string unknown_message(std::string_view name) const;
   /// The entry `name`, read from `key` of `table`; else a ConfigError at that key's file:line
   /// with the closest names. `inputs_only`: an output is an error too ("`what`").
-  const Entry& lookup(const config::StrictTable& table, std::string_view key,
-                      std::string_view name, bool inputs_only = false,
+  const Entry& lookup(const config::StrictTable& table, std::string_view key, std::string_view name,
+                      bool inputs_only = false,
                       std::string_view what = "only inputs can be set") const;
 
  private:

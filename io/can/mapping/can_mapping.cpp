@@ -241,8 +241,8 @@ CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& da
     for (const auto& s : m.signals) {
       const std::size_t k = s.model->slot;
       if (seen[k]) {
-        throw table.error("rx", "model signal " + slot_name(catalogue, k) +
-                                    " is received from two CAN signals");
+        throw table.error(
+            "rx", "model signal " + slot_name(catalogue, k) + " is received from two CAN signals");
       }
       seen[k] = true;
     }

@@ -65,9 +65,9 @@ namespace rig::io::can::mapping {
 
 /// One bound signal: index into MessageDef::signals, and the model side.
 struct SignalBinding {
-  std::size_t dbc_signal = 0;          ///< index in MessageDef::signals
+  std::size_t dbc_signal = 0;             ///< index in MessageDef::signals
   std::optional<signals::Binding> model;  ///< the catalogue entry; empty for a TX constant
-  double scale = 1.0;                  ///< model = dbc * scale + offset
+  double scale = 1.0;                     ///< model = dbc * scale + offset
   double offset = 0.0;
   double fallback = 0.0;                       ///< RX: model value on timeout
   double constant = 0.0;                       ///< TX without model signal: physical DBC value sent

@@ -2,8 +2,8 @@
 /// @file
 /// The send half of the CAN mapping, independent of sockets: decides which messages are due in
 /// this loop cycle (each at its GenMsgCycleTime, phase-aligned to the loop start), and encodes
-/// them from the cycle's signals and report (catalogue bindings) with alive counter and checksum filled in. The bridge only moves the
-/// resulting bytes to the transport.
+/// them from the cycle's signals and report (catalogue bindings) with alive counter and checksum
+/// filled in. The bridge only moves the resulting bytes to the transport.
 ///
 /// RT-safe: due_frames() never allocates, never throws, does no string work.
 
