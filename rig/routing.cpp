@@ -19,8 +19,9 @@ void read_route(const io::config::StrictTable& t, const toml::node& node, const 
   if (!e->binding.is_input())
     throw t.error_at(node, name, "'" + name + "' is an output; only inputs are routed");
   const auto source = node.value<std::string>();
-  if (!source || (*source != "driver" && *source != "can"))
-    throw t.error_at(node, name, "expected \"driver\" or \"can\"");
+  if (!source) throw t.error_at(node, name, "expected a string");
+  if (*source != "driver" && *source != "can")  // as StrictTable::choice says it
+    throw t.error_at(node, name, "unknown value '" + *source + "' (expected one of: driver, can)");
   const std::size_t slot = e->binding.slot;
   if (requests[slot] != RouteRequest::kNone)
     throw t.error_at(node, name, "'" + e->name + "' is routed twice (by a name and an alias)");

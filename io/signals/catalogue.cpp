@@ -239,18 +239,18 @@ std::vector<std::string> Catalogue::closest(std::string_view name, std::size_t c
   return names;
 }
 
-std::string Catalogue::unknown_message(std::string_view name) const {
-  std::string text = "unknown signal '" + std::string(name) + "' (closest: ";
+std::string Catalogue::unknown_message(std::string_view name, std::string_view lead) const {
+  std::string text = std::string(lead) + " '" + std::string(name) + "' (closest: ";
   const std::vector<std::string> near = closest(name);
   for (std::size_t i = 0; i < near.size(); ++i) text += (i == 0 ? "" : ", ") + near[i];
   return text + "; `rig signals CONFIG` lists them all)";
 }
 
 const Entry& Catalogue::lookup(const config::StrictTable& table, std::string_view key,
-                               std::string_view name, bool inputs_only,
-                               std::string_view what) const {
+                               std::string_view name, bool inputs_only, std::string_view what,
+                               std::string_view lead) const {
   const Entry* e = find(name);
-  if (e == nullptr) throw table.error(key, unknown_message(name));
+  if (e == nullptr) throw table.error(key, unknown_message(name, lead));
   if (inputs_only && e->direction == Direction::kOut)
     throw table.error(key, "'" + std::string(name) + "' is a model output (" + e->name + "); " +
                                std::string(what));

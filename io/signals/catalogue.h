@@ -62,13 +62,15 @@ class Catalogue {
   /// At most `count` names and aliases closest to `name` (edit distance), nearest first.
   [[nodiscard]] std::vector<std::string> closest(std::string_view name,
                                                  std::size_t count = 5) const;
-  /// "unknown signal 'X' (closest: a, b, ...; `rig signals CONFIG` lists them all)".
-  [[nodiscard]] std::string unknown_message(std::string_view name) const;
+  /// "unknown signal 'X' (closest: a, b, ...; `rig signals CONFIG` lists them all)", `lead`
+  /// instead of "unknown signal" if given.
+  [[nodiscard]] std::string unknown_message(std::string_view name,
+                                            std::string_view lead = "unknown signal") const;
   /// The entry `name`, read from `key` of `table`; else a ConfigError at that key's file:line
   /// with the closest names. `inputs_only`: an output is an error too ("`what`").
   const Entry& lookup(const config::StrictTable& table, std::string_view key, std::string_view name,
-                      bool inputs_only = false,
-                      std::string_view what = "only inputs can be set") const;
+                      bool inputs_only = false, std::string_view what = "only inputs can be set",
+                      std::string_view lead = "unknown signal") const;
 
  private:
   void add(Entry e);

@@ -163,7 +163,8 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db,
       sb.constant = st.number("constant");
     } else {
       const std::string name = st.string("model");
-      sb.model = catalogue.lookup(st, "model", name, rx, "it cannot be received").binding;
+      sb.model = catalogue.lookup(st, "model", name, rx, "it cannot be received", "no model signal")
+                     .binding;
       if (st.has("convert") && st.has("scale"))
         throw st.error("scale", "give convert or scale, not both");
       const double named = named_scale(st);
