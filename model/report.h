@@ -24,8 +24,8 @@ struct WheelReport {
   double hub_travel_m = 0;    ///< suspension travel
   double steer_angle_rad = 0;
   double brake_torque_nm = 0;
+  double brake_pressure_pa = 0;  ///< the pressure the model applied (wheel input or circuit)
   double drive_torque_nm = 0;
-  double brake_pressure_pa = 0;  ///< applied wheel brake pressure (its circuit's or its own)
   // what the tire saw (model/tire's TireKinematics and the load of its characteristic): with
   // the road's mu and the deflections these reproduce force_x_n, force_y_n exactly
   double long_speed_mps = 0;    ///< contact point velocity along the tire's heading, v_x

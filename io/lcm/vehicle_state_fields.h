@@ -70,6 +70,8 @@ struct VehicleStateFields {
        "steer_angle_rad"},
       {"wheel_brake_torque_nm", "N m", member<&W::brake_torque_nm>, &S::wheel_brake_torque_nm,
        "brake_torque_nm"},
+      {"wheel_brake_pressure_pa", "Pa", member<&W::brake_pressure_pa>, &S::wheel_brake_pressure_pa,
+       "applied_brake_pressure_pa"},
       {"wheel_drive_torque_nm", "N m", member<&W::drive_torque_nm>, &S::wheel_drive_torque_nm,
        "drive_torque_nm"},
       {"wheel_hub_travel_m", "m", member<&W::hub_travel_m>, &S::wheel_hub_travel_m, "hub_travel_m"},
@@ -80,8 +82,6 @@ struct VehicleStateFields {
       {"wheel_rolling_radius_m", "m", member<&W::rolling_radius_m>, &S::wheel_rolling_radius_m,
        "rolling_radius_m"},
       {"wheel_tire_load_n", "N", member<&W::tire_load_n>, &S::wheel_tire_load_n, "tire_load_n"},
-      {"wheel_brake_pressure_pa", "Pa", member<&W::brake_pressure_pa>, &S::wheel_brake_pressure_pa,
-       "applied_brake_pressure_pa"},
   };
 
   /// Per wheel, flags: 1 valid, 0 not.
@@ -93,6 +93,8 @@ struct VehicleStateFields {
   static constexpr ScalarField<S, R> kVehicle[] = {
       {"steering_wheel_angle_rad", "rad", member<&R::steering, &Steering::wheel_angle_rad>,
        &S::steering_wheel_angle_rad, "steering.wheel_angle_rad"},
+      {"steering_wheel_speed_radps", "rad/s", member<&R::steering, &Steering::wheel_speed_radps>,
+       &S::steering_wheel_speed_radps, "steering.wheel_speed_radps"},
       {"steering_wheel_torque_nm", "N m", member<&R::steering, &Steering::wheel_torque_nm>,
        &S::steering_wheel_torque_nm, "steering.wheel_torque_nm"},
       {"torsion_bar_torque_nm", "N m", member<&R::steering, &Steering::torsion_bar_torque_nm>,
@@ -115,8 +117,6 @@ struct VehicleStateFields {
        ""},
       {"brake_pressure_rr_pa", "Pa", element<&R::brake_pressure_pa, 3>, &S::brake_pressure_rr_pa,
        ""},
-      {"steering_wheel_speed_radps", "rad/s", member<&R::steering, &Steering::wheel_speed_radps>,
-       &S::steering_wheel_speed_radps, "steering.wheel_speed_radps"},
   };
   /// Integers once per message (CSV: after the doubles).
   static constexpr ScalarField<S, R, std::int32_t> kVehicleInt[] = {

@@ -36,7 +36,7 @@ std::vector<std::unique_ptr<VehicleModel>> build_units(const CombinationParams& 
       p.chassis.supported = true;
       p.chassis.support_x_m = params.joints[k - 1].trailing_point_m.x();
     }
-    units[k] = std::make_unique<VehicleModel>(p, step_size_s);
+    units[k] = std::make_unique<VehicleModel>(p, step_size_s, static_cast<int>(k));
     hitch_load_n = held ? units[k]->framework().support_load_n() : 0.0;
   }
   return units;

@@ -46,8 +46,9 @@ class CombinationShell : public SteppedModel {
  public:
   [[nodiscard]] double step_size_s() const noexcept override { return h_; }
   [[nodiscard]] double time_s() const noexcept override { return time_s_; }
-  /// All units read the same inputs (trailer brakes follow their axles' brake circuits); the
-  /// outputs are the leading unit's. A failed unit or coupling undoes the step in every unit;
+  /// All units read the same inputs, each its own block of slots (model/signals.h): its
+  /// wheels' pressures, else its circuits, else the enum's circuits by its axles' brake_circuit;
+  /// the outputs are the leading unit's. A failed unit or coupling undoes the step in every unit;
   /// the fault is the first failed unit's (with its index), else the coupling's (unit -1).
   StepStatus step(Signals& signals) noexcept final;
   [[nodiscard]] ModelFault last_fault() const noexcept final { return fault_; }

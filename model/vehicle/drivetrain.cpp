@@ -17,6 +17,11 @@ double interpolate(const std::vector<double>& xs, const std::vector<double>& ys,
 
 }  // namespace
 
+double engine_drag_nm(const DrivetrainParams& p, double speed_radps) noexcept {
+  return (p.drag_torque_nm + p.drag_torque_per_speed_nms * std::abs(speed_radps)) *
+         std::tanh(speed_radps / 5.0);
+}
+
 double engine_torque_nm(const DrivetrainParams& p, double throttle, double speed_radps) noexcept {
   // idle control: proportional throttle below idle speed; fuel cut above max speed
   const double idle =
@@ -26,13 +31,12 @@ double engine_torque_nm(const DrivetrainParams& p, double throttle, double speed
   const double full = speed_radps > 0
                           ? interpolate(p.full_load_speed_radps, p.full_load_torque_nm, speed_radps)
                           : 0.0;
-  const double drag = (p.drag_torque_nm + p.drag_torque_per_speed_nms * std::abs(speed_radps)) *
-                      std::tanh(speed_radps / 5.0);
-  return thr * full - (1.0 - thr) * drag;
+  return thr * full - (1.0 - thr) * engine_drag_nm(p, speed_radps);
 }
 
 double delivered_engine_torque_nm(const DrivetrainParams& p, double throttle, double speed_radps,
-                                  double cut_nm) noexcept {
+                                  double cut_nm, bool running) noexcept {
+  if (!running) return -engine_drag_nm(p, speed_radps);
   const double te = engine_torque_nm(p, throttle, speed_radps);
   return std::max(te + cut_nm, std::min(te, engine_torque_nm(p, 0.0, speed_radps)));
 }
@@ -78,8 +82,8 @@ double Drivetrain::coupling_torque_nm(double engine_radps, double carrier_radps)
 
 void Drivetrain::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
   (void)y;
-  const double te =
-      delivered_engine_torque_nm(p_, inputs_.throttle, z(0), work_.engine_torque_cut_nm);
+  const double te = delivered_engine_torque_nm(p_, inputs_.throttle, z(0),
+                                               work_.engine_torque_cut_nm, inputs_.ignition_on);
   const double tc = coupling_torque_nm(z(0), z(1));
   double shafts = 0;
   if (shafts_ != nullptr) {

@@ -12,13 +12,16 @@
 
 namespace rig::model::vehicle {
 
+/// The engine's drag (friction and pumping) at a speed [N m], >= 0 turning forward.
+double engine_drag_nm(const DrivetrainParams& p, double speed_radps) noexcept;
+
 /// Engine torque [N m] at throttle [0..1] and speed, with idle control and drag.
 double engine_torque_nm(const DrivetrainParams& p, double throttle, double speed_radps) noexcept;
 
 /// The engine's torque after the gearbox's reduction cut_nm (<= 0): down to the closed-throttle
-/// torque at most (a fuel cut).
+/// torque at most (a fuel cut). Not running (ignition off): only its drag, no idle control.
 double delivered_engine_torque_nm(const DrivetrainParams& p, double throttle, double speed_radps,
-                                  double cut_nm) noexcept;
+                                  double cut_nm, bool running) noexcept;
 
 /// Lock-up clutch engagement [0..1] at a turbine speed (above lockup_start_radps) and near the
 /// converter's coupling point (turbine/engine speed ratio). Evaluated once per step from the step's

@@ -15,11 +15,14 @@ void Steering::mass_matrix(const Vector& y, Matrix& m) const noexcept {
 
 double Steering::torsion_bar_torque_nm(const Vector& y, const Vector& z) const noexcept {
   const double i = p_.rack_per_pinion_m_per_rad;
-  return p_.torsion_bar_stiffness_nmpr * (y(0) - y(1) / i) +
-         p_.torsion_bar_damping_nmspr * (z(0) - z(1) / i);
+  // the overriding gear turns the pinion against the torsion bar's lower end: that end is at
+  // u / i_SB - overlay (the overlay as its rate limit lets it follow the command)
+  return p_.torsion_bar_stiffness_nmpr * (y(0) - y(1) / i + state_.overlay_rad) +
+         p_.torsion_bar_damping_nmspr * (z(0) - z(1) / i + state_.overlay_rate_radps);
 }
 
 double Steering::assist_torque_nm(double torsion_bar_nm) const noexcept {
+  if (!inputs_.ignition_on) return 0.0;  // the EPS is not powered
   if (inputs_.assist_from_input) return inputs_.assist_input_nm;
   return p_.assist_max_nm * std::tanh(p_.assist_gain * torsion_bar_nm / p_.assist_max_nm);
 }
@@ -41,7 +44,7 @@ bool Steering::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
   const double i = p_.rack_per_pinion_m_per_rad;
   const double c = p_.torsion_bar_stiffness_nmpr, d = p_.torsion_bar_damping_nmspr;
   double dassist = p_.assist_gain;  // d T_a / d T_tb of the boost curve
-  if (inputs_.assist_from_input) {
+  if (inputs_.assist_from_input || !inputs_.ignition_on) {
     dassist = 0;
   } else {
     const double t = std::tanh(p_.assist_gain * torsion_bar_torque_nm(y, z) / p_.assist_max_nm);

@@ -6,7 +6,11 @@
 /// angle), rack mass, rack dry friction (regularized, its steep slope in M_VI keeps it stable),
 /// assist torque on the pinion (input signal or built-in boost curve), and the tie-rod forces
 /// from the wheels (VehicleWorkspace::rack_force_n). The wheel is driven by hand torque or, in
-/// angle mode, by a stiff position servo (a steering robot).
+/// angle mode, by a stiff position servo (a steering robot). The optional overriding gear of
+/// sec. 2.2 in its simple form: an overlay angle added at the pinion (the torsion bar's lower
+/// end at u / i_SB - overlay), so with the hand wheel held the rack moves by overlay x i_SB;
+/// the overlay follows its command at most at overlay_rate_max_radps (VehicleState).
+/// Ignition off: no assist (neither the input nor the boost curve).
 
 #include "model/solver/mechanical_block.h"
 #include "model/vehicle/vehicle_inputs.h"
@@ -29,7 +33,8 @@ class Steering final : public solver::MechanicalBlock<2> {
                        Matrix& dq_dz) const noexcept override;
   /// Torsion bar torque at a state [N m].
   [[nodiscard]] double torsion_bar_torque_nm(const Vector& y, const Vector& z) const noexcept;
-  /// Assist torque for a torsion bar torque (input signal or boost curve) [N m].
+  /// Assist torque for a torsion bar torque (input signal or boost curve; 0 with the ignition
+  /// off) [N m].
   [[nodiscard]] double assist_torque_nm(double torsion_bar_nm) const noexcept;
 
  private:

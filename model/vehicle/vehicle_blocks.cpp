@@ -103,7 +103,7 @@ void VehicleBlocks::update_outputs() noexcept {
   work_.assist_torque_nm = steering_.assist_torque_nm(tb);
   work_.engine_torque_nm =
       delivered_engine_torque_nm(p_.drivetrain, inputs_.throttle, drivetrain_.engine_speed_radps(),
-                                 work_.engine_torque_cut_nm);
+                                 work_.engine_torque_cut_nm, inputs_.ignition_on);
 }
 
 }  // namespace rig::model::vehicle

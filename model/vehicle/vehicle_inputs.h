@@ -11,7 +11,8 @@ namespace rig::model::vehicle {
 
 struct VehicleInputs {
   double throttle = 0;  ///< accelerator pedal [0..1]
-  /// Wheel brake pressure from the wheel's brake circuit (front or rear) [Pa].
+  /// Wheel brake pressure [Pa]: the wheel's own input (an ESC's modulated pressure) while
+  /// valid, else its axle's brake circuit (front or rear).
   std::array<double, kMaxWheels> brake_pressure_pa{};
   double steering_angle_cmd_rad = 0;  ///< steering robot (angle mode)
   double hand_torque_cmd_nm = 0;      ///< driver's hand torque (torque mode)
@@ -19,7 +20,12 @@ struct VehicleInputs {
   /// built-in boost curve.
   bool assist_from_input = false;
   double assist_input_nm = 0;
+  /// Overriding gear: angle added at the pinion, between the torsion bar and the rack [rad].
+  double overlay_angle_rad = 0;
   int gear_request = 99;  ///< -1 reverse, 0 neutral, 1..n, 99 automatic
+  /// Ignition on or start (terminal 15 / 50): the engine runs and the EPS assists. Off or
+  /// accessory: no combustion torque (the engine drags), no assist (boost curve nor input).
+  bool ignition_on = true;
 };
 
 }  // namespace rig::model::vehicle

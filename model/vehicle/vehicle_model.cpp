@@ -10,12 +10,16 @@
 
 namespace rig::model::vehicle {
 
-VehicleModel::VehicleModel(const VehicleParams& params, double step_size_s)
-    : p_(params), h_(step_size_s), fault_check_(p_) {
+VehicleModel::VehicleModel(const VehicleParams& params, double step_size_s, int unit_index)
+    : p_(params), h_(step_size_s), unit_(unit_index), fault_check_(p_) {
   if (p_.axles.empty() || 2 * p_.axles.size() > static_cast<std::size_t>(kMaxWheels)) {
     throw std::invalid_argument("vehicle: need 1.." + std::to_string(kMaxWheels / 2) + " axles");
   }
   if (!(h_ > 0)) throw std::invalid_argument("vehicle: step size must be > 0");
+  if (unit_ < 0 || unit_ >= kMaxUnits) {
+    throw std::invalid_argument("vehicle: unit index " + std::to_string(unit_) + " not in 0.." +
+                                std::to_string(kMaxUnits - 1));
+  }
   work_.wheel_count = 2 * static_cast<int>(p_.axles.size());
   state_ = make_state(p_, driven_wheels(p_).count);
   saved_ = state_;
@@ -66,11 +70,12 @@ StepStatus VehicleModel::step(Signals& signals) noexcept {
 }
 
 void VehicleModel::set_inputs(const Signals& signals) noexcept {
-  inputs_ = read_inputs(p_, signals);
+  inputs_ = read_inputs(p_, unit_, signals);
 }
 
 void VehicleModel::begin_step(double h) noexcept {
   saved_ = state_;
+  follow_overlay(h);
   // the drive train's step: ratios, lock-up and torque cut from the start state, frozen
   const Engagement e = select_gear(p_.drivetrain, inputs_, state_.drivetrain_z(1), state_);
   work_.turbine_ratio = e.turbine_ratio;
@@ -86,6 +91,14 @@ void VehicleModel::begin_step(double h) noexcept {
   work_.lockup_fraction = state_.lockup_fraction;
   blocks_->update_contacts();
   blocks_->sequence().begin_step(h);  // eq. (8) up to z^u = M_VI^-1 q of the framework (eq. 46)
+}
+
+void VehicleModel::follow_overlay(double h) noexcept {
+  const double max_step = p_.steering.overlay_rate_max_radps * h;
+  const double move =
+      std::clamp(inputs_.overlay_angle_rad - state_.overlay_rad, -max_step, max_step);
+  state_.overlay_rad += move;
+  state_.overlay_rate_radps = move / h;
 }
 
 void VehicleModel::finish_step(double h, ConstVectorRef extra_rate) noexcept {

@@ -28,8 +28,10 @@ namespace rig::model::vehicle {
 class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
  public:
   /// Builds every block and workspace (allocates); throws std::invalid_argument on parameters
-  /// the model cannot run (fewer than one axle, more than kMaxWheels wheels, h <= 0).
-  VehicleModel(const VehicleParams& params, double step_size_s);
+  /// the model cannot run (fewer than one axle, more than kMaxWheels wheels, h <= 0, a unit
+  /// index outside 0..kMaxUnits-1). unit_index: its place in a combination (0: the leading unit
+  /// or a vehicle on its own), which selects its input slots (model/signals.h).
+  VehicleModel(const VehicleParams& params, double step_size_s, int unit_index = 0);
   ~VehicleModel() override;
 
   [[nodiscard]] double step_size_s() const noexcept override { return h_; }
@@ -68,6 +70,7 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
 
   // ---- for tests and tools ----
   [[nodiscard]] const VehicleParams& params() const noexcept { return p_; }
+  [[nodiscard]] int unit_index() const noexcept { return unit_; }
   [[nodiscard]] const VehicleState& state() const noexcept { return state_; }
   [[nodiscard]] const VehicleWorkspace& workspace() const noexcept { return work_; }
   [[nodiscard]] VehicleFramework& framework() noexcept { return blocks_->framework(); }
@@ -102,6 +105,7 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
  private:
   VehicleParams p_;
   double h_;
+  int unit_;  ///< index in a combination: its input slots
   FaultCheck fault_check_;
   ModelFault fault_{};
   VehicleState state_;
@@ -111,6 +115,9 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   std::unique_ptr<VehicleBlocks> blocks_;
   Eigen::VectorXd zero_rate_;
   StepStatus last_status_ = StepStatus::kOk;
+
+  /// The overriding gear's angle towards the overlay command, rate limited (begin_step).
+  void follow_overlay(double h) noexcept;
 };
 
 }  // namespace rig::model::vehicle

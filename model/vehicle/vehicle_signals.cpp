@@ -5,24 +5,46 @@
 
 namespace rig::model::vehicle {
 
-VehicleInputs read_inputs(const VehicleParams& params, const Signals& s) noexcept {
-  const auto in = [&](Signal id, double fallback) {
-    const double v = s[id];
-    return s.valid[index(id)] && std::isfinite(v) ? v : fallback;
-  };
+namespace {
+
+/// A slot's value while valid and finite, else the fallback.
+double slot_or(const Signals& s, std::size_t slot, double fallback) noexcept {
+  const double v = s.value[slot];
+  return s.valid[slot] && std::isfinite(v) ? v : fallback;
+}
+
+/// Each wheel's own pressure slot while valid, else its axle's circuit: the unit's circuit
+/// slot, else the enum's (unit 0's) circuit, so that unrouted units brake as the first.
+void read_brake_pressures(const VehicleParams& params, int unit, const Signals& s,
+                          VehicleInputs& r) noexcept {
+  const double front = slot_or(s, index(Signal::kBrakePressureFront), 0.0);
+  const double rear = slot_or(s, index(Signal::kBrakePressureRear), 0.0);
+  const double circuit[2] = {std::max(0.0, slot_or(s, brake_circuit_slot(unit, 0), front)),
+                             std::max(0.0, slot_or(s, brake_circuit_slot(unit, 1), rear))};
+  for (std::size_t k = 0; k < 2 * params.axles.size(); ++k) {
+    const double axle = circuit[params.axles[k / 2].brake_circuit == 0 ? 0 : 1];
+    const std::size_t slot = wheel_brake_slot(unit, static_cast<int>(k));
+    r.brake_pressure_pa[k] =
+        s.valid[slot] && std::isfinite(s.value[slot]) ? std::max(0.0, s.value[slot]) : axle;
+  }
+}
+
+}  // namespace
+
+VehicleInputs read_inputs(const VehicleParams& params, int unit, const Signals& s) noexcept {
+  const auto in = [&](Signal id, double fallback) { return slot_or(s, index(id), fallback); };
   VehicleInputs r;
   r.throttle = std::clamp(in(Signal::kThrottlePedal, 0.0), 0.0, 1.0);
-  const double front = std::max(0.0, in(Signal::kBrakePressureFront, 0.0));
-  const double rear = std::max(0.0, in(Signal::kBrakePressureRear, 0.0));
-  for (std::size_t k = 0; k < 2 * params.axles.size(); ++k) {
-    r.brake_pressure_pa[k] = params.axles[k / 2].brake_circuit == 0 ? front : rear;
-  }
+  read_brake_pressures(params, unit, s, r);
   r.steering_angle_cmd_rad = in(Signal::kSteeringWheelAngleCmd, 0.0);
   r.hand_torque_cmd_nm = in(Signal::kSteeringWheelTorqueCmd, 0.0);
   // the assist input while valid when routed to it (SteeringParams::assist_from_input)
   r.assist_from_input = params.steering.assist_from_input && s.valid[index(Signal::kAssistTorque)];
   r.assist_input_nm = in(Signal::kAssistTorque, 0.0);
+  r.overlay_angle_rad = in(Signal::kSteeringOverlayAngleCmd, 0.0);
   r.gear_request = static_cast<int>(std::lround(in(Signal::kGearRequest, 99.0)));
+  // 0 off, 1 accessory: no engine, no assist; 2 on, 3 start (no starter: as on); unrouted: on
+  r.ignition_on = std::lround(in(Signal::kIgnition, 2.0)) >= 2;
   return r;
 }
 
@@ -74,8 +96,8 @@ void fill_wheel(const VehicleState& state, const VehicleInputs& in, const Vehicl
   r.hub_travel_m = state.framework_y(6 + i);
   r.steer_angle_rad = w.steer_rad;
   r.brake_torque_nm = w.brake_torque_nm;
-  r.drive_torque_nm = w.shaft_torque_nm;
   r.brake_pressure_pa = in.brake_pressure_pa[k];
+  r.drive_torque_nm = w.shaft_torque_nm;
   r.long_speed_mps = w.out.tire.long_speed_mps;
   r.lat_speed_mps = w.out.tire.lat_speed_mps;
   r.rolling_radius_m = w.out.tire.rolling_radius_m;

@@ -11,9 +11,12 @@
 
 namespace rig::model::vehicle {
 
-/// The inputs of the next step; an invalid or non-finite input takes its neutral value (no
-/// throttle, no brake, straight ahead, automatic gearbox).
-[[nodiscard]] VehicleInputs read_inputs(const VehicleParams& params, const Signals& s) noexcept;
+/// The inputs of the next step of unit `unit` (from 0) of a combination (0 on its own); an
+/// invalid or non-finite input takes its neutral value (no throttle, no brake, straight ahead,
+/// no overlay, automatic gearbox, ignition on). Brakes: a wheel's own pressure slot
+/// (wheel_brake_slot) while valid, else its axle's circuit (brake_circuit_slot, else the enum's).
+[[nodiscard]] VehicleInputs read_inputs(const VehicleParams& params, int unit,
+                                        const Signals& s) noexcept;
 
 /// The output signals of the current state.
 void write_outputs(const VehicleState& state, const VehicleInputs& in, const VehicleWorkspace& work,

@@ -39,6 +39,10 @@ struct VehicleState {
   bool shift_torque_first = true;  ///< phase order: torque phase first (power-on upshift)
   double shift_inertia_s = 0;      ///< the running shift's inertia phase (stretched at part load)
   double lockup_fraction = 0;      ///< the lock-up clutch's engagement [0..1] (ramped in)
+  /// The overriding gear's angle at the pinion and its rate over the last step: the overlay
+  /// command, followed at most at SteeringParams::overlay_rate_max_radps.
+  double overlay_rad = 0;
+  double overlay_rate_radps = 0;
   // ---- quasi-static memory of the last step ----
   /// Rack travel at the wheel after the tie-rod compliance: where eq. (29) is evaluated next.
   std::array<double, kMaxWheels> rack_at_wheel_m{};

@@ -15,7 +15,8 @@ inline model::Signals all_driver_inputs() {
     s.valid[i] = true;
     s.source[i] = model::SignalSource::kDriver;
   }
-  s[model::Signal::kGearRequest] = 99;  // automatic
+  s[model::Signal::kGearRequest] = 99;
+  s[model::Signal::kIgnition] = 2;  // on (valid, so 0 would be off)  // automatic
   return s;
 }
 

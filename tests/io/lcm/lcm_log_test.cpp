@@ -156,8 +156,7 @@ TEST(Log2Csv, ReproducesKnownValuesAndFlattensArrays) {
   ASSERT_EQ(state.rows.size(), 300u);
   EXPECT_EQ(state.header.front(), "timestamp_us");
   // 8 leading scalars, 2 units x 15, num_wheels, 6 x (1 + 17 + 1 flag), 13 scalars, gear and
-  // the 3 model-validity fields, num_joints, 1 joint x 5 (issue 14: + the wheels' applied brake
-  // pressure and the steering wheel speed).
+  // the 3 model-validity fields, num_joints, 1 joint x 5.
   EXPECT_EQ(state.header.size(), 8u + 30u + 1u + 114u + 13u + 3u + 2u + 5u);
   EXPECT_EQ(state.rows[123].size(), state.header.size());
   EXPECT_EQ(state.number(123, "cycle"), 123.0);

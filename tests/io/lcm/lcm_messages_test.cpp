@@ -87,7 +87,7 @@ TEST(SnapshotEncoder, SignalsAndStatusCarryNamesSourcesCountersAndPercentiles) {
   EXPECT_EQ(sig.unit[0], "rad");
   const auto speed = model::index(model::Signal::kVehicleSpeed);
   EXPECT_EQ(sig.name[speed], "vehicle_speed_mps");
-  EXPECT_DOUBLE_EQ(sig.value[speed], static_cast<double>(speed) + 1.0);
+  EXPECT_DOUBLE_EQ(sig.value[speed], 7.0 + 0.001 * 1000);  // the synthetic snapshot's speed
   EXPECT_EQ(sig.valid[0], 0);  // index % 5 == 0 is invalid in the synthetic snapshot
   EXPECT_EQ(sig.valid[1], 1);
   EXPECT_EQ(sig.source[0], rig::signals_t::SOURCE_DRIVER);

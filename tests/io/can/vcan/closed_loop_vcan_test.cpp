@@ -28,6 +28,7 @@ model::Signals driver_inputs() {
     s.source[i] = model::SignalSource::kDriver;
   }
   s[Signal::kGearRequest] = 99;
+  s[Signal::kIgnition] = 2;  // on (valid, so 0 would be off)
   s.source[model::index(Signal::kAssistTorque)] = model::SignalSource::kCan;
   return s;
 }
