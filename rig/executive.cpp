@@ -22,6 +22,34 @@ void sleep_ms(std::int64_t ms) noexcept {
   }
 }
 
+/// Copies the report's scalars and the units, wheels and joints the model has. The rest is never
+/// written (the shape is fixed at start), so it stays as value-initialised in both: the same
+/// snapshot as a whole copy, without moving kilobytes of unused wheels each cycle.
+void copy_report(const model::ModelReport& from, model::ModelReport& to) noexcept {
+  to.time_s = from.time_s;
+  to.unit_count = from.unit_count;
+  for (int k = 0; k < from.unit_count && k < model::kMaxUnits; ++k) {
+    const model::UnitReport& u = from.units[static_cast<std::size_t>(k)];
+    model::UnitReport& v = to.units[static_cast<std::size_t>(k)];
+    v.position_m = u.position_m;
+    v.orientation_rad = u.orientation_rad;
+    v.velocity_mps = u.velocity_mps;
+    v.angular_velocity_radps = u.angular_velocity_radps;
+    v.acceleration_mps2 = u.acceleration_mps2;
+    v.wheel_count = u.wheel_count;
+    for (int i = 0; i < u.wheel_count && i < model::kMaxWheelsPerUnit; ++i)
+      v.wheels[static_cast<std::size_t>(i)] = u.wheels[static_cast<std::size_t>(i)];
+  }
+  to.steering = from.steering;
+  to.drivetrain = from.drivetrain;
+  to.brake_pressure_pa = from.brake_pressure_pa;
+  to.joint_count = from.joint_count;
+  to.joints = from.joints;
+  to.valid = from.valid;
+  to.fault_kind = from.fault_kind;
+  to.fault_unit = from.fault_unit;
+}
+
 }  // namespace
 
 /// The loop thread's position on the deadline grid.
@@ -219,7 +247,7 @@ OverrunDecision Executive::handoff(io::CycleTiming& t, PhaseTimer& phases,
   io::Snapshot* slot = handoff_.claim(stop_requested_);
   if (slot != nullptr) {
     slot->signals = signals_;
-    slot->report = report_;
+    copy_report(report_, slot->report);
     read_io_counters(slot->can);
   }
   end_ns = phases.end(io::Phase::kHandoff);
