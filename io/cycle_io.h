@@ -7,12 +7,14 @@
 #include <cstdint>
 
 #include "io/io_counters.h"
+#include "io/signals/binding.h"
 #include "model/signals.h"
 
 namespace rig::io {
 
-/// A set of model inputs (bit: the input slot, model::index(signal) or a unit block slot), e.g. those an adapter feeds. Decided once
-/// at start (the rig's routing) and handed to each adapter at construction.
+/// A set of model inputs (bit: the input slot, model::index(signal) or a unit block slot), e.g.
+/// those an adapter feeds. Decided once at start (the rig's routing) and handed to each adapter at
+/// construction.
 using InputSet = std::bitset<model::kSlotCount>;
 
 /// Something an adapter wants in the event log (a bus state change, a rate-limited report):
@@ -34,8 +36,9 @@ class CycleIo {
   /// Inputs phase: drains everything pending and writes the inputs this adapter feeds (the set
   /// it was constructed with), marking stale ones invalid with their fallback value.
   virtual void receive(std::int64_t monotonic_ns, model::Signals& inputs) noexcept = 0;
-  /// Outputs phase: encodes and sends what is due at this time.
-  virtual void transmit(std::int64_t monotonic_ns, const model::Signals& outputs) noexcept = 0;
+  /// Outputs phase: encodes and sends what is due at this time, reading the cycle's signals and
+  /// the report the executive filled after the step (through catalogue bindings).
+  virtual void transmit(std::int64_t monotonic_ns, const signals::CycleView& cycle) noexcept = 0;
   /// Current counters, copied into the cycle's snapshot.
   virtual void read_counters(IoCounters& counters) const noexcept = 0;
   /// Hands over the oldest pending event (false: none). The loop calls it after receive()

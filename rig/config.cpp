@@ -126,17 +126,17 @@ driver::PathDriverVehicle path_driver_vehicle(const ModelSettings& m) {
 }
 
 /// [driver]: a table or a path driver. A table column must not be routed to CAN.
-void read_driver(io::config::StrictTable& t, const RoutingRequests& requests, RigConfig& c) {
+void read_driver(io::config::StrictTable& t, const RoutingRequests& requests,
+                 const RouteLocations& routes, RigConfig& c) {
   const std::string kind = t.choice("kind", "table", {"table", "path"});
   if (kind == "path") {
     c.path_driver = driver::read_path_driver(t, path_driver_vehicle(c.model));
     return;
   }
-  c.driver = driver::read_table_driver(t);
-  for (const model::Signal s : c.driver->columns) {
-    if (requests[model::index(s)] == RouteRequest::kCan)
-      throw t.error("columns",
-                    "'" + std::string(model::info(s).name) + "' is routed to CAN in [routing]");
+  c.driver = driver::read_table_driver(t, *c.catalogue);
+  for (const std::size_t slot : c.driver->columns) {
+    if (requests[slot] == RouteRequest::kCan)
+      throw t.error("columns", "'" + routes[slot].name + "' is routed to CAN in [routing]");
   }
 }
 
@@ -150,19 +150,32 @@ io::InputSet driver_writes(const RigConfig& c) {
 /// Where each input routed to CAN is; without a [can] section such a route is an error (the
 /// input would never be written).
 void locate_can_routes(const io::config::StrictTable& routing, const RoutingRequests& requests,
-                       RigConfig& c) {
+                       const RouteLocations& routes, RigConfig& c) {
   for (std::size_t i = 0; i < requests.size(); ++i) {
     if (requests[i] != RouteRequest::kCan) continue;
-    const std::string name(model::kSignalTable[i].name);
     if (!c.can)
-      throw routing.error(name,
-                          "routed to \"can\", but there is no [can] section (no mapping "
-                          "receives it; add [can] or route it to \"driver\")");
-    c.can_route_at[i] = routing.location(name);
+      throw io::config::ConfigError(routes[i].at + ": " + routing.context() + " " + routes[i].name +
+                                    ": routed to \"can\", but there is no [can] section (no "
+                                    "mapping receives it; add [can] or route it to \"driver\")");
+    c.can_route_at[i] = routes[i];
   }
 }
 
 }  // namespace
+
+io::signals::ModelShape model_shape(const ModelSettings& model) {
+  io::signals::ModelShape shape;
+  shape.axle_count = {1, 0, 0, 0};  // the quarter car
+  if (model.vehicle) shape.axle_count[0] = static_cast<int>(model.vehicle->params.axles.size());
+  if (model.combination) {
+    const auto& units = model.combination->units;
+    shape.unit_count = static_cast<int>(units.size());
+    for (std::size_t k = 0; k < units.size() && k < shape.axle_count.size(); ++k)
+      shape.axle_count[k] = static_cast<int>(units[k].axles.size());
+    shape.joint_count = static_cast<int>(model.combination->joints.size());
+  }
+  return shape;
+}
 
 RigConfig load_config(const std::filesystem::path& file) {
   const toml::table doc = io::config::load_toml_file(file);
@@ -171,14 +184,17 @@ RigConfig load_config(const std::filesystem::path& file) {
   c.file = file;
   if (auto t = top.optional_table("rig")) c.rig = read_rig(*t);
   if (auto t = top.optional_table("model")) c.model = read_model(*t);
+  c.catalogue = std::make_shared<const io::signals::Catalogue>(model_shape(c.model));
   // Routing before the driver: a table column must not be routed to CAN.
   RoutingRequests requests{};
+  RouteLocations routes{};
   std::optional<io::config::StrictTable> routing = top.optional_table("routing");
-  if (routing) requests = read_routing(*routing);
-  if (auto t = top.optional_table("driver")) read_driver(*t, requests, c);
-  if (auto t = top.optional_table("can")) c.can = io::can::bridge::read_can_settings(*t);
-  if (routing) locate_can_routes(*routing, requests, c);
-  if (auto t = top.optional_table("lcm")) c.lcm = io::lcm::read_lcm_settings(*t);
+  if (routing) requests = read_routing(*routing, *c.catalogue, &routes);
+  if (auto t = top.optional_table("driver")) read_driver(*t, requests, routes, c);
+  if (auto t = top.optional_table("can"))
+    c.can = io::can::bridge::read_can_settings(*t, c.catalogue);
+  if (routing) locate_can_routes(*routing, requests, routes, c);
+  if (auto t = top.optional_table("lcm")) c.lcm = io::lcm::read_lcm_settings(*t, c.catalogue);
   top.finish();  // unknown top-level sections
   c.routing = resolve_routing(requests, driver_writes(c));
   return c;

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include "io/config/combination_file.h"
 #include "io/config/vehicle_file.h"
 #include "io/lcm/lcm_settings.h"
+#include "io/signals/catalogue.h"
 #include "model/paper/quarter_car_params.h"
 #include "rig/driver/path_driver.h"
 #include "rig/driver/table_driver.h"
@@ -62,12 +64,18 @@ struct RigConfig {
   std::optional<driver::PathDriverParams> path_driver;  ///< [driver] kind = "path"
   /// Which source feeds each input: [routing], and the inputs the driver writes.
   Routing routing;
-  io::lcm::LcmSettings lcm;  ///< [lcm] (optional): URL, channel prefix, rates
+  /// The signal catalogue of the configured model (io/signals): what every name binds to.
+  std::shared_ptr<const io::signals::Catalogue> catalogue;
+  io::lcm::LcmSettings lcm;  ///< [lcm] (optional): URL, channel prefix, rates, signals
   std::optional<io::can::bridge::CanSettings> can;  ///< [can], read by io/can's read_can_settings
-  /// `file:line` of each [routing] entry `= "can"` ("" for the others), for errors found when
-  /// the mapping is loaded (an input routed to CAN that no [[rx]] signal receives).
-  std::array<std::string, model::kSlotCount> can_route_at{};
+  /// `file:line` and name of each [routing] entry `= "can"` ("" for the others), for errors
+  /// found when the mapping is loaded (an input routed to CAN that no [[rx]] signal receives).
+  RouteLocations can_route_at{};
 };
+
+/// The units and axles the signal names follow: the vehicle's (one unit), the combination's,
+/// or the quarter car's one unit of one axle.
+io::signals::ModelShape model_shape(const ModelSettings& model);
 
 /// Loads and validates a configuration file. Throws ConfigError("file:line: ...").
 RigConfig load_config(const std::filesystem::path& file);

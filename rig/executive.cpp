@@ -22,6 +22,34 @@ void sleep_ms(std::int64_t ms) noexcept {
   }
 }
 
+/// Copies the report's scalars and the units, wheels and joints the model has. The rest is never
+/// written (the shape is fixed at start), so it stays as value-initialised in both: the same
+/// snapshot as a whole copy, without moving kilobytes of unused wheels each cycle.
+void copy_report(const model::ModelReport& from, model::ModelReport& to) noexcept {
+  to.time_s = from.time_s;
+  to.unit_count = from.unit_count;
+  for (int k = 0; k < from.unit_count && k < model::kMaxUnits; ++k) {
+    const model::UnitReport& u = from.units[static_cast<std::size_t>(k)];
+    model::UnitReport& v = to.units[static_cast<std::size_t>(k)];
+    v.position_m = u.position_m;
+    v.orientation_rad = u.orientation_rad;
+    v.velocity_mps = u.velocity_mps;
+    v.angular_velocity_radps = u.angular_velocity_radps;
+    v.acceleration_mps2 = u.acceleration_mps2;
+    v.wheel_count = u.wheel_count;
+    for (int i = 0; i < u.wheel_count && i < model::kMaxWheelsPerUnit; ++i)
+      v.wheels[static_cast<std::size_t>(i)] = u.wheels[static_cast<std::size_t>(i)];
+  }
+  to.steering = from.steering;
+  to.drivetrain = from.drivetrain;
+  to.brake_pressure_pa = from.brake_pressure_pa;
+  to.joint_count = from.joint_count;
+  to.joints = from.joints;
+  to.valid = from.valid;
+  to.fault_kind = from.fault_kind;
+  to.fault_unit = from.fault_unit;
+}
+
 }  // namespace
 
 /// The loop thread's position on the deadline grid.
@@ -134,8 +162,10 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
   phases.end(io::Phase::kDriver);
   if (params_.stall_ms > 0 && loop.cycle == params_.stall_cycle) sleep_ms(params_.stall_ms);
   const model::StepStatus status = step_model();
+  fill_report();
   const std::int64_t model_end_ns = phases.end(io::Phase::kModel);
-  for (io::CycleIo* a : io_) a->transmit(model_end_ns, signals_);
+  const io::signals::CycleView view{signals_, report_};
+  for (io::CycleIo* a : io_) a->transmit(model_end_ns, view);
   phases.end(io::Phase::kOutputs);
   t.sim_time_s = model_.time_s();
 
@@ -177,6 +207,15 @@ model::StepStatus Executive::step_model() noexcept {
   return model::StepStatus::kVehicleFault;
 }
 
+/// The cycle's report with its validity (the model's state, or after a fault its last
+/// fault-free one, flagged invalid).
+void Executive::fill_report() noexcept {
+  model_.fill_report(report_);
+  report_.valid = fault_.kind == model::FaultKind::kNone ? 1 : 0;
+  report_.fault_kind = static_cast<std::int32_t>(fault_.kind);
+  report_.fault_unit = fault_.kind == model::FaultKind::kNone ? -1 : fault_.unit;
+}
+
 /// The event of a failed step, and whether the loop stops.
 StopReason Executive::after_fault(model::StepStatus status, const io::CycleTiming& t,
                                   std::int64_t end_ns) noexcept {
@@ -208,10 +247,7 @@ OverrunDecision Executive::handoff(io::CycleTiming& t, PhaseTimer& phases,
   io::Snapshot* slot = handoff_.claim(stop_requested_);
   if (slot != nullptr) {
     slot->signals = signals_;
-    model_.fill_report(slot->report);
-    slot->report.valid = fault_.kind == model::FaultKind::kNone ? 1 : 0;
-    slot->report.fault_kind = static_cast<std::int32_t>(fault_.kind);
-    slot->report.fault_unit = fault_.kind == model::FaultKind::kNone ? -1 : fault_.unit;
+    copy_report(report_, slot->report);
     read_io_counters(slot->can);
   }
   end_ns = phases.end(io::Phase::kHandoff);

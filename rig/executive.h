@@ -143,6 +143,7 @@ class Executive {
   struct LoopState;
   StopReason cycle(LoopState& loop) noexcept;
   model::StepStatus step_model() noexcept;
+  void fill_report() noexcept;
   void log_io_events(std::int64_t now_ns) noexcept;
   StopReason after_fault(model::StepStatus status, const io::CycleTiming& t,
                          std::int64_t end_ns) noexcept;
@@ -166,6 +167,9 @@ class Executive {
   CycleHook* hook_ = nullptr;
 
   model::Signals signals_{};
+  /// The cycle's report, filled after the step: what the adapters transmit from (catalogue
+  /// outputs) and what the snapshot carries.
+  model::ModelReport report_{};
   SnapshotHandoff handoff_;
   Dispatcher dispatcher_;
   std::uint32_t consecutive_misses_ = 0;  // loop thread

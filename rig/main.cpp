@@ -18,6 +18,7 @@
 #include "rig/rt/thread_setup.h"
 #include "rig/run.h"
 #include "rig/signals.h"
+#include "rig/signals_command.h"
 
 namespace {
 
@@ -94,6 +95,17 @@ int main(int argc, char** argv) {
   check_cmd->add_option("--kind", check_kind, "check every FILE as this kind")
       ->check(CLI::IsMember(kind_names));
 
+  std::string signals_config;
+  bool signals_json = false;
+  auto* signals_cmd = app.add_subcommand(
+      "signals",
+      "print the signal catalogue of a run configuration's model: name, unit, direction, min, "
+      "max, aliases (docs/signals.md)");
+  signals_cmd->add_option("CONFIG", signals_config, "run configuration (TOML)")->required();
+  signals_cmd->add_flag("--json", signals_json,
+                        "a JSON array of {name, unit, direction, min, "
+                        "max, aliases}");
+
   try {
     app.parse(argc, argv);
     if (!stall.empty()) {
@@ -111,5 +123,6 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (*check_cmd) return check(check_files, check_kind);
+  if (*signals_cmd) return rig::signals_command(signals_config, signals_json, std::cout, std::cerr);
   return rig::run(run);
 }

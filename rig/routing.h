@@ -12,9 +12,11 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 
 #include "io/config/strict_table.h"
 #include "io/cycle_io.h"
+#include "io/signals/catalogue.h"
 #include "model/signals.h"
 
 namespace rig {
@@ -23,14 +25,27 @@ namespace rig {
 enum class RouteRequest : std::uint8_t { kNone, kDriver, kCan };
 using RoutingRequests = std::array<RouteRequest, model::kSlotCount>;
 
-/// Reads [routing]: `<input name> = "driver" | "can"`. ConfigError (file:line) for unknown
-/// names, outputs or values. Calls finish().
-RoutingRequests read_routing(io::config::StrictTable& routing_table);
+/// Each input's [routing] entry: its `file:line` and its name as written ("" for the others).
+struct RouteEntry {
+  std::string at;
+  std::string name;
+};
+using RouteLocations = std::array<RouteEntry, model::kSlotCount>;
+
+/// Reads [routing]: `<input> = "driver" | "can"`, the input a catalogue name or alias of
+/// `catalogue` (io/signals), as one quoted key ("unit1.axle1.left.brake_pressure_pa" = "can") or
+/// dotted (unit1.axle1.left.brake_pressure_pa = "can", TOML's nested tables): both are read.
+/// ConfigError (file:line) for unknown names (with the closest ones), outputs, values, or an
+/// input named twice (by a name and an alias). `where`: each entry's location, if given.
+RoutingRequests read_routing(
+    io::config::StrictTable& routing_table,
+    const io::signals::Catalogue& catalogue = io::signals::Catalogue::two_axle_vehicle(),
+    RouteLocations* where = nullptr);
 
 struct Routing {
   std::array<model::SignalSource, model::kSlotCount> source{};  ///< published, per input
-  io::InputSet can_inputs;                                        ///< what the CAN bridge feeds
-  io::InputSet driver_inputs;                                     ///< what the driver feeds
+  io::InputSet can_inputs;                                      ///< what the CAN bridge feeds
+  io::InputSet driver_inputs;                                   ///< what the driver feeds
   /// The assist torque: the ECU's (`assist_torque_nm = "can"`), else the built-in boost curve.
   bool assist_from_input = false;
 };

@@ -18,22 +18,22 @@ void check_can_routes(const RigConfig& config, const io::can::mapping::CanConfig
   io::InputSet received;
   for (const auto& message : can.mapping.rx) {
     for (const auto& s : message.signals) {
-      if (s.model) received.set(model::index(*s.model));
+      if (s.model) received.set(s.model->slot);
     }
   }
-  for (std::size_t i = 0; i < model::kSignalCount; ++i) {
+  for (std::size_t i = 0; i < model::kSlotCount; ++i) {
     if (!config.routing.can_inputs[i] || received[i]) continue;
-    throw io::config::ConfigError(config.can_route_at[i] + ": [routing] " +
-                                  std::string(model::kSignalTable[i].name) +
+    throw io::config::ConfigError(config.can_route_at[i].at + ": [routing] " +
+                                  config.can_route_at[i].name +
                                   ": routed to \"can\", but no [[rx]] signal of " +
                                   config.can->mapping_file.string() + " receives it");
   }
 }
 
-std::string can_input_names(const io::InputSet& inputs) {
+std::string can_input_names(const RigConfig& config, const io::InputSet& inputs) {
   std::string names;
-  for (std::size_t i = 0; i < model::kSignalCount; ++i) {
-    if (inputs[i]) names += (names.empty() ? "" : ", ") + std::string(model::kSignalTable[i].name);
+  for (std::size_t i = 0; i < model::kSlotCount; ++i) {
+    if (inputs[i]) names += (names.empty() ? "" : ", ") + config.can_route_at[i].name;
   }
   return names.empty() ? "none" : names;
 }
@@ -60,7 +60,7 @@ std::vector<std::unique_ptr<io::CycleIo>> make_io(const RigConfig& config,
   if (can_off) {
     std::cerr << "rig: warning: --can none: CAN is off although " << config.file.string()
               << " has [can]; the inputs routed to it ("
-              << can_input_names(config.routing.can_inputs)
+              << can_input_names(config, config.routing.can_inputs)
               << ") take their mapping fallback, flagged invalid\n";
     io.push_back(io::can::bridge::make_can_fallback_io(files, config.routing.can_inputs));
     return io;

@@ -190,6 +190,22 @@ std::vector<long long> StrictTable::integers(std::string_view key, std::size_t m
   return out;
 }
 
+std::vector<std::pair<std::string, const toml::node*>> StrictTable::strings(
+    std::string_view key, std::size_t max_entries) {
+  const toml::node& node = require(key);
+  const toml::array* arr = node.as_array();
+  if (arr == nullptr) throw error(key, "expected an array of strings");
+  check_length(key, *arr, max_entries);
+  std::vector<std::pair<std::string, const toml::node*>> out;
+  out.reserve(arr->size());
+  for (const toml::node& element : *arr) {
+    const auto s = element.value_exact<std::string>();
+    if (!s) throw error_at(element, key, "expected an array of strings");
+    out.emplace_back(*s, &element);
+  }
+  return out;
+}
+
 std::vector<std::vector<double>> StrictTable::number_rows(std::string_view key, std::size_t columns,
                                                           std::size_t max_entries) {
   const toml::node& node = require(key);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -58,6 +59,9 @@ class StrictTable {
   /// An array of integers (a float element is an error, as for integer_in).
   [[nodiscard]] std::vector<long long> integers(std::string_view key,
                                                 std::size_t max_entries = kMaxListEntries);
+  /// An array of strings, each with its node (for errors at the element's line).
+  [[nodiscard]] std::vector<std::pair<std::string, const toml::node*>> strings(
+      std::string_view key, std::size_t max_entries = kMaxListEntries);
   /// An array of rows of `columns` numbers each, e.g. [[x, y, z], ...].
   [[nodiscard]] std::vector<std::vector<double>> number_rows(
       std::string_view key, std::size_t columns, std::size_t max_entries = kMaxListEntries);
@@ -83,6 +87,8 @@ class StrictTable {
 
   /// `file:line` of `key` (of the table if the key is absent), for messages raised later.
   [[nodiscard]] std::string location(std::string_view key) const;
+  /// `file:line` of `node` (an entry of this table or of a table nested in it).
+  [[nodiscard]] std::string location(const toml::node& node) const { return where(node.source()); }
 
   [[nodiscard]] const std::filesystem::path& file() const { return file_; }
   [[nodiscard]] const std::string& context() const { return context_; }

@@ -55,6 +55,9 @@ struct ArrayField {
   std::string_view unit;  ///< SI; "1" for ratios and counts
   Value (*source)(const From&);
   std::vector<Value> Message::*lcm;
+  /// Its name in the signal catalogue (io/signals), after the element's prefix
+  /// (`unit2.` + "yaw_rate_radps"); empty: not a catalogue output.
+  std::string_view quantity;
 };
 
 /// A quantity with one value per message: LCM member and CSV column `name`.
@@ -65,6 +68,8 @@ struct ScalarField {
   std::string_view unit;
   Value (*source)(const From&);
   Value Message::*lcm;
+  /// Its name in the signal catalogue after `unit1.` ("steering.rack_force_n"); empty: none.
+  std::string_view quantity;
 };
 
 /// Calls `apply(row)` for every row of the constexpr table `Rows`, unrolled at compile time so

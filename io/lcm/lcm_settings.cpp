@@ -103,7 +103,8 @@ std::string lcm_url_warning(const std::string& url) {
          (ttl == 1 ? "" : "s") + "); ttl=0 keeps it here";
 }
 
-LcmSettings read_lcm_settings(config::StrictTable& lcm_table) {
+LcmSettings read_lcm_settings(config::StrictTable& lcm_table,
+                              const std::shared_ptr<const signals::Catalogue>& catalogue) {
   LcmSettings settings;
   settings.url = lcm_table.string("url", settings.url);
   if (std::string problem = lcm_url_problem(settings.url); !problem.empty())
@@ -119,6 +120,15 @@ LcmSettings read_lcm_settings(config::StrictTable& lcm_table) {
       lcm_table.number_in("status_rate_hz", settings.status_rate_hz, 0.0, kMaxRateHz);
   settings.signals_rate_hz =
       lcm_table.number_in("signals_rate_hz", settings.signals_rate_hz, 0.0, kMaxRateHz);
+  if (lcm_table.has("signals")) {
+    const signals::Catalogue& c = catalogue ? *catalogue : signals::Catalogue::two_axle_vehicle();
+    for (const auto& [name, node] : lcm_table.strings("signals", c.entries().size())) {
+      const signals::Entry* e = c.find(name);
+      if (e == nullptr) throw lcm_table.error_at(*node, "signals", c.unknown_message(name));
+      settings.signals.push_back({name, e->unit, e->binding});
+    }
+    if (settings.signals.empty()) throw lcm_table.error("signals", "names no signal");
+  }
   lcm_table.finish();
   return settings;
 }

@@ -2,14 +2,24 @@
 /// @file
 /// Settings of the LCM publisher and log writer: the optional [lcm] section of the rig config.
 
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "io/config/strict_table.h"
+#include "io/signals/catalogue.h"
 
 namespace rig::io::lcm {
 
 /// Default LCM URL: UDP multicast that stays on the host (ttl=0) unless the user opens it.
 inline constexpr const char* kDefaultLcmUrl = "udpm://239.255.76.67:7667?ttl=0";
+
+/// One signal RIG_SIGNALS carries: its name as configured, and its catalogue binding.
+struct LcmSignal {
+  std::string name;
+  std::string unit;
+  signals::Binding binding;
+};
 
 struct LcmSettings {
   std::string url = kDefaultLcmUrl;
@@ -20,6 +30,9 @@ struct LcmSettings {
   double state_rate_hz = 1000.0;
   double status_rate_hz = 10.0;
   double signals_rate_hz = 100.0;
+  /// `signals = ["name", ...]`: what RIG_SIGNALS carries, catalogue names or aliases in that
+  /// order. Empty (the default): the slots of model/signals.h's enum by their names, as always.
+  std::vector<LcmSignal> signals;
 
   [[nodiscard]] std::string state_channel() const { return channel_prefix + "RIG_STATE"; }
   [[nodiscard]] std::string status_channel() const { return channel_prefix + "RIG_STATUS"; }
@@ -39,8 +52,10 @@ int lcm_url_ttl(const std::string& url);
 std::string lcm_url_warning(const std::string& url);
 
 /// Reads the [lcm] table (keys url, channel_prefix, state_rate_hz, status_rate_hz,
-/// signals_rate_hz; all optional) and rejects unknown keys (calls finish()). Throws
-/// config::ConfigError with `file:line` on bad values.
-LcmSettings read_lcm_settings(config::StrictTable& lcm_table);
+/// signals_rate_hz, signals; all optional; `signals` names entries of `catalogue`, nullptr: the
+/// two-axle vehicle's) and rejects unknown keys (calls finish()). Throws config::ConfigError with
+/// `file:line` on bad values and unknown signal names (with the closest ones).
+LcmSettings read_lcm_settings(config::StrictTable& lcm_table,
+                              const std::shared_ptr<const signals::Catalogue>& catalogue = nullptr);
 
 }  // namespace rig::io::lcm

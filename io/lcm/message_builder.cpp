@@ -88,7 +88,60 @@ void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg) {
   for (std::size_t j = 0; j < nj; ++j) set_elements<Fields::kJoint>(msg, j, r.joints[j]);
 }
 
-void fill_signals(const Snapshot& snapshot, rig::signals_t& msg) {
+namespace {
+
+/// The source of an input as signals_t says it.
+std::int8_t source_code(model::SignalSource source) {
+  switch (source) {
+    case model::SignalSource::kModel:
+      return rig::signals_t::SOURCE_MODEL;
+    case model::SignalSource::kDriver:
+      return rig::signals_t::SOURCE_DRIVER;
+    case model::SignalSource::kCan:
+      return rig::signals_t::SOURCE_CAN;
+  }
+  return rig::signals_t::SOURCE_MODEL;
+}
+
+/// [lcm] signals: each chosen catalogue entry through its binding.
+void fill_chosen_signals(const Snapshot& snapshot, std::span<const LcmSignal> chosen,
+                         rig::signals_t& msg) {
+  const std::size_t n = chosen.size();
+  if (msg.name.size() != n) {
+    msg.num_signals = static_cast<std::int32_t>(n);
+    msg.name.assign(n, std::string());
+    msg.unit.assign(n, std::string());
+    msg.is_input.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      msg.name[i] = chosen[i].name;
+      msg.unit[i] = chosen[i].unit;
+      msg.is_input[i] = chosen[i].binding.is_input() ? 1 : 0;
+    }
+    msg.value.assign(n, 0.0);
+    msg.valid.assign(n, 0);
+    msg.source.assign(n, 0);
+  }
+  const signals::CycleView cycle{snapshot.signals, snapshot.report};
+  for (std::size_t i = 0; i < n; ++i) {
+    const signals::Binding& b = chosen[i].binding;
+    msg.value[i] = b.value(cycle);
+    msg.valid[i] = b.valid(cycle) ? 1 : 0;
+    msg.source[i] =
+        b.is_input() ? source_code(snapshot.signals.source[b.slot]) : rig::signals_t::SOURCE_MODEL;
+  }
+}
+
+}  // namespace
+
+void fill_signals(const Snapshot& snapshot, std::span<const LcmSignal> chosen,
+                  rig::signals_t& msg) {
+  msg.sim_time_s = snapshot.timing.sim_time_s;
+  msg.monotonic_ns = snapshot.timing.wake_ns;
+  msg.cycle = static_cast<std::int64_t>(snapshot.timing.cycle);
+  if (!chosen.empty()) {
+    fill_chosen_signals(snapshot, chosen, msg);
+    return;
+  }
   constexpr auto n = model::kSignalCount;
   if (msg.name.size() != n) {
     // Names, units and the input flag are constant: set them once.
@@ -105,24 +158,11 @@ void fill_signals(const Snapshot& snapshot, rig::signals_t& msg) {
     msg.valid.assign(n, 0);
     msg.source.assign(n, 0);
   }
-  msg.sim_time_s = snapshot.timing.sim_time_s;
-  msg.monotonic_ns = snapshot.timing.wake_ns;
-  msg.cycle = static_cast<std::int64_t>(snapshot.timing.cycle);
   const auto& s = snapshot.signals;
   for (std::size_t i = 0; i < n; ++i) {
     msg.value[i] = s.value[i];
     msg.valid[i] = s.valid[i] ? 1 : 0;
-    switch (s.source[i]) {
-      case model::SignalSource::kModel:
-        msg.source[i] = rig::signals_t::SOURCE_MODEL;
-        break;
-      case model::SignalSource::kDriver:
-        msg.source[i] = rig::signals_t::SOURCE_DRIVER;
-        break;
-      case model::SignalSource::kCan:
-        msg.source[i] = rig::signals_t::SOURCE_CAN;
-        break;
-    }
+    msg.source[i] = source_code(s.source[i]);
   }
 }
 

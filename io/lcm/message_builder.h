@@ -5,7 +5,9 @@
 /// arrays have grown to the vehicle's unit and wheel counts, filling them does not allocate.
 
 #include <cstdint>
+#include <span>
 
+#include "io/lcm/lcm_settings.h"
 #include "io/lcm/timing_window.h"
 #include "io/snapshot.h"
 #include "io/snapshot_sink.h"
@@ -24,7 +26,8 @@ struct StatusTotals {
 };
 
 void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg);
-void fill_signals(const Snapshot& snapshot, rig::signals_t& msg);
+/// The enum's slots by their names, or (`chosen` not empty) the [lcm] signals in their order.
+void fill_signals(const Snapshot& snapshot, std::span<const LcmSignal> chosen, rig::signals_t& msg);
 void fill_status(const Snapshot& snapshot, const RunInfo& info, const StatusTotals& totals,
                  const TimingPercentiles& window, rig::rig_status_t& msg);
 

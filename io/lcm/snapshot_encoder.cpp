@@ -58,7 +58,7 @@ std::size_t SnapshotEncoder::encode(const Snapshot& snapshot, std::uint64_t drop
     if (out[n].data != nullptr) ++n;
   }
   if (signals_rate_.due(t.cycle)) {
-    fill_signals(snapshot, signals_msg_);
+    fill_signals(snapshot, settings_.signals, signals_msg_);
     out[n] = encode_message(signals_msg_, signals_channel_, signals_buffer_);
     if (out[n].data != nullptr) ++n;
   }

@@ -23,6 +23,7 @@ class Driver {
 
  protected:
   [[nodiscard]] bool feeds(model::Signal s) const noexcept { return feeds_[model::index(s)]; }
+  [[nodiscard]] bool feeds(std::size_t slot) const noexcept { return feeds_[slot]; }
 
  private:
   io::InputSet feeds_;

@@ -11,13 +11,13 @@ namespace rig::driver {
 
 namespace {
 
-/// A table value must be finite and within its input's range (model::input_range): an error at
+/// A table value must be finite and within its input's range (model::slot_range): an error at
 /// load, never replaced at run time.
 void check_value(const io::config::StrictTable& t, const toml::node& row, const std::string& name,
-                 std::optional<model::Signal> signal, double v) {
+                 std::optional<std::size_t> slot, double v) {
   if (!std::isfinite(v)) throw t.error_at(row, "rows", name + ": value is not finite");
-  if (!signal) return;
-  const model::InputRange r = model::input_range(*signal);
+  if (!slot) return;
+  const model::InputRange r = model::slot_range(*slot);
   if (v < r.min || v > r.max || (r.whole && v != std::floor(v))) {
     std::ostringstream msg;
     msg << name << ": " << v << " is outside [" << r.min << ", " << r.max << "]"
@@ -28,7 +28,8 @@ void check_value(const io::config::StrictTable& t, const toml::node& row, const 
 
 }  // namespace
 
-TableDriverParams read_table_driver(io::config::StrictTable& t) {
+TableDriverParams read_table_driver(io::config::StrictTable& t,
+                                    const io::signals::Catalogue& catalogue) {
   TableDriverParams p;
   const auto& raw = t.raw();
   // columns/rows are arrays of strings/arrays, which StrictTable has no reader for: check the
@@ -49,13 +50,11 @@ TableDriverParams read_table_driver(io::config::StrictTable& t) {
   if (names.empty() || names.front() != "time_s")
     throw t.error("columns", "the first column must be \"time_s\"");
   for (std::size_t i = 1; i < names.size(); ++i) {
-    const auto sig = model::signal_by_name(names[i]);
-    if (!sig) throw t.error("columns", "unknown signal '" + names[i] + "'");
-    if (!model::info(*sig).is_input)
-      throw t.error("columns", "'" + names[i] + "' is an output, not an input");
-    if (std::find(p.columns.begin(), p.columns.end(), *sig) != p.columns.end())
+    const std::size_t slot =
+        catalogue.lookup(t, "columns", names[i], true, "not an input").binding.slot;
+    if (std::find(p.columns.begin(), p.columns.end(), slot) != p.columns.end())
       throw t.error("columns", "duplicate column '" + names[i] + "'");
-    p.columns.push_back(*sig);
+    p.columns.push_back(slot);
   }
   const toml::array* rows = raw["rows"].as_array();
   if (rows == nullptr || rows->empty())
@@ -90,7 +89,7 @@ namespace rig::driver {
 
 io::InputSet table_driver_inputs(const TableDriverParams& params) {
   io::InputSet inputs;
-  for (const model::Signal s : params.columns) inputs.set(model::index(s));
+  for (const std::size_t slot : params.columns) inputs.set(slot);
   return inputs;
 }
 
@@ -111,11 +110,12 @@ void TableDriver::update(double sim_time_s, model::Signals& signals) noexcept {
     w = (sim_time_s - times[i]) / (times[i + 1] - times[i]);
   }
   for (std::size_t c = 0; c < n_cols; ++c) {
-    const model::Signal s = params_.columns[c];
-    if (!feeds(s)) continue;
+    const std::size_t slot = params_.columns[c];
+    if (!feeds(slot)) continue;
     const double a = params_.values[i * n_cols + c];
     const double b = w > 0.0 ? params_.values[(i + 1) * n_cols + c] : a;
-    signals.set(s, a + w * (b - a));
+    signals.value[slot] = a + w * (b - a);
+    signals.valid[slot] = true;
   }
 }
 

@@ -7,19 +7,24 @@
 #include <vector>
 
 #include "io/config/strict_table.h"
+#include "io/signals/catalogue.h"
 #include "rig/driver/driver.h"
 
 namespace rig::driver {
 
 struct TableDriverParams {
-  std::vector<model::Signal> columns;  ///< the input signals, in column order
-  std::vector<double> times_s;         ///< strictly increasing
-  std::vector<double> values;          ///< row-major, times_s.size() x columns.size()
+  std::vector<std::size_t> columns;  ///< the input slots (model/signals.h), in column order
+  std::vector<double> times_s;       ///< strictly increasing
+  std::vector<double> values;        ///< row-major, times_s.size() x columns.size()
 };
 
-/// Reads `[driver] kind = "table"`: columns = ["time_s", <input names>...], rows = [[t, v...]...].
-/// Throws ConfigError(file:line) on unknown names, non-input signals, ragged or unsorted rows.
-TableDriverParams read_table_driver(io::config::StrictTable& driver_table);
+/// Reads `[driver] kind = "table"`: columns = ["time_s", <input names>...], rows = [[t, v...]...];
+/// a column names an input of `catalogue` by name or alias (io/signals). Throws
+/// ConfigError(file:line) on unknown names (with the closest ones), outputs, ragged or unsorted
+/// rows.
+TableDriverParams read_table_driver(
+    io::config::StrictTable& driver_table,
+    const io::signals::Catalogue& catalogue = io::signals::Catalogue::two_axle_vehicle());
 
 /// What a table driver can write: its columns.
 io::InputSet table_driver_inputs(const TableDriverParams& params);

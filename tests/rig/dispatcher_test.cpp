@@ -46,7 +46,7 @@ class FakeIo final : public io::CycleIo {
  public:
   explicit FakeIo(io::IoCounters c) : counters_(c) {}
   void receive(std::int64_t, model::Signals&) noexcept override { ++received; }
-  void transmit(std::int64_t, const model::Signals&) noexcept override {}
+  void transmit(std::int64_t, const io::signals::CycleView&) noexcept override {}
   void read_counters(io::IoCounters& c) const noexcept override { c = counters_; }
   std::uint64_t received = 0;
 

@@ -265,7 +265,7 @@ TEST(EventLog, OverflowWritesTheLostCount) {
 // ---- Table driver ----
 TEST(TableDriver, InterpolatesLinearlyAndHoldsEnds) {
   driver::TableDriverParams p;
-  p.columns = {Signal::kThrottlePedal, Signal::kBrakePressureFront};
+  p.columns = {model::index(Signal::kThrottlePedal), model::index(Signal::kBrakePressureFront)};
   p.times_s = {1.0, 2.0, 4.0};
   p.values = {0.0, 0.0, 1.0, 10.0, 0.5, 30.0};
   io::InputSet feeds;  // the routing sends the brake pressure from CAN: not the table's

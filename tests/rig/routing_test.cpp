@@ -108,9 +108,9 @@ TEST(Routing, CanRouteNeedsACanSection) {
       load_text("with_can.toml",
                 "[routing]\n\nbrake_pressure_front_pa = \"can\"\n"
                 "[can]\nmapping = \"" RIG_SOURCE_DIR "/config/can/steering-bench.toml\"\n");
-  EXPECT_NE(c.can_route_at[idx(Signal::kBrakePressureFront)].find("with_can.toml:3"),
+  EXPECT_NE(c.can_route_at[idx(Signal::kBrakePressureFront)].at.find("with_can.toml:3"),
             std::string::npos);
-  EXPECT_TRUE(c.can_route_at[idx(Signal::kThrottlePedal)].empty());
+  EXPECT_TRUE(c.can_route_at[idx(Signal::kThrottlePedal)].at.empty());
 }
 
 TEST(Routing, TableColumnsAreTheDriversAndMustNotBeRoutedToCan) {

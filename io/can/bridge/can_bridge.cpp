@@ -114,17 +114,17 @@ void CanBridge::receive(std::int64_t monotonic_ns, model::Signals& inputs) noexc
   watch_bus_state();
   rx_.take_out_of_range_reports(
       monotonic_ns, [this](const can::mapping::OutOfRangeReport& r) { report_out_of_range(r); });
-  for (std::size_t i = 0; i < model::index(model::kFirstOutput); ++i) {
-    if (!feeds_[i]) continue;
+  for (std::size_t i = 0; i < model::kSlotCount; ++i) {
+    if (!feeds_[i]) continue;  // inputs only: the routing feeds no output
     inputs.value[i] = rx_signals_.value[i];
     inputs.valid[i] = rx_signals_.valid[i];
   }
 }
 
-void CanBridge::transmit(std::int64_t monotonic_ns, const model::Signals& outputs) noexcept {
+void CanBridge::transmit(std::int64_t monotonic_ns, const signals::CycleView& cycle) noexcept {
   if (!started_) start(monotonic_ns);
   const std::size_t n = tx_.due_frames(
-      monotonic_ns, outputs, std::span<can::mapping::TxFrame>(tx_frames_), engine_counters_);
+      monotonic_ns, cycle, std::span<can::mapping::TxFrame>(tx_frames_), engine_counters_);
   tx_.take_out_of_range_reports(
       monotonic_ns, [this](const can::mapping::OutOfRangeReport& r) { report_out_of_range(r); });
   for (std::size_t i = 0; i < n; ++i) {

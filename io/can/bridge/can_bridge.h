@@ -39,7 +39,7 @@ class CanBridge final : public io::CycleIo {
             bool kernel_filter, const io::InputSet& feeds);
 
   void receive(std::int64_t monotonic_ns, model::Signals& inputs) noexcept override;
-  void transmit(std::int64_t monotonic_ns, const model::Signals& outputs) noexcept override;
+  void transmit(std::int64_t monotonic_ns, const signals::CycleView& cycle) noexcept override;
   void read_counters(IoCounters& counters) const noexcept override;
   bool next_event(io::IoEvent& event) noexcept override;
   [[nodiscard]] std::uint64_t events_dropped() const noexcept { return events_dropped_; }

@@ -14,16 +14,19 @@ namespace rig::io::can::bridge {
 class CanFallbackIo final : public io::CycleIo {
  public:
   struct Fallback {
-    model::Signal signal;
+    std::size_t slot = 0;  ///< the input slot
     double value = 0.0;
   };
   explicit CanFallbackIo(std::vector<Fallback> fallbacks) : fallbacks_(std::move(fallbacks)) {}
 
   void receive(std::int64_t /*monotonic_ns*/, model::Signals& inputs) noexcept override {
-    for (const Fallback& f : fallbacks_) inputs.set(f.signal, f.value, false);
+    for (const Fallback& f : fallbacks_) {
+      inputs.value[f.slot] = f.value;
+      inputs.valid[f.slot] = false;
+    }
   }
   void transmit(std::int64_t /*monotonic_ns*/,
-                const model::Signals& /*outputs*/) noexcept override {}
+                const signals::CycleView& /*cycle*/) noexcept override {}
   void read_counters(IoCounters& counters) const noexcept override { counters = IoCounters{}; }
 
  private:

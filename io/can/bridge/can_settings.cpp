@@ -20,8 +20,10 @@ const dbc::MessageDef* first_fd_message(const can::mapping::CanConfig& config) {
 
 }  // namespace
 
-CanSettings read_can_settings(config::StrictTable& can_table) {
+CanSettings read_can_settings(config::StrictTable& can_table,
+                              std::shared_ptr<const signals::Catalogue> catalogue) {
   CanSettings s;
+  s.catalogue = std::move(catalogue);
   s.interface = can_table.string("interface", "vcan0");
   if (s.interface.empty() || s.interface.size() > 15) {
     throw can_table.error("interface", "interface name must have 1..15 characters");
@@ -49,10 +51,11 @@ can::mapping::CanConfig load_can_files(const CanSettings& settings) {
     toml::table root = config::load_toml_file(settings.mapping_file);
     config::StrictTable table(root, settings.mapping_file, "mapping");
     (void)table.string("dbc", "");  // superseded by [can] dbc
-    config.mapping = can::mapping::parse_can_mapping(table, config.database);
+    config.mapping =
+        can::mapping::parse_can_mapping(table, config.database, settings.signal_catalogue());
     table.finish();
   } else {
-    config = can::mapping::load_can_config(settings.mapping_file);
+    config = can::mapping::load_can_config(settings.mapping_file, settings.signal_catalogue());
   }
   return config;
 }
@@ -86,7 +89,7 @@ std::unique_ptr<io::CycleIo> make_can_fallback_io(const can::mapping::CanConfig&
   std::vector<CanFallbackIo::Fallback> fallbacks;
   for (const auto& message : config.mapping.rx) {
     for (const auto& s : message.signals) {
-      if (s.model && feeds[model::index(*s.model)]) fallbacks.push_back({*s.model, s.fallback});
+      if (s.model && feeds[s.model->slot]) fallbacks.push_back({s.model->slot, s.fallback});
     }
   }
   return std::make_unique<CanFallbackIo>(std::move(fallbacks));

@@ -31,11 +31,19 @@ struct CanSettings {
   std::optional<std::filesystem::path> dbc_file;  ///< overrides the mapping's `dbc` key
   bool fd = true;
   bool kernel_filter = false;
+  /// The configured model's signal catalogue the mapping binds against (nullptr: the two-axle
+  /// vehicle's, io/signals/catalogue.h).
+  std::shared_ptr<const signals::Catalogue> catalogue;
+
+  [[nodiscard]] const signals::Catalogue& signal_catalogue() const {
+    return catalogue ? *catalogue : signals::Catalogue::two_axle_vehicle();
+  }
 };
 
-/// Reads a [can] table (load time; config::ConfigError with file:line on bad input). Calls
-/// finish().
-CanSettings read_can_settings(config::StrictTable& can_table);
+/// Reads a [can] table (load time; config::ConfigError with file:line on bad input), its mapping
+/// bound against `catalogue`. Calls finish().
+CanSettings read_can_settings(config::StrictTable& can_table,
+                              std::shared_ptr<const signals::Catalogue> catalogue = nullptr);
 
 /// Loads the DBC and the mapping of `settings` (load time; config::ConfigError on bad input).
 /// The DBC's notes (skipped sections) are in the result's database.warnings.

@@ -58,7 +58,8 @@ std::uint64_t invalid_raw(config::StrictTable& t, const dbc::SignalDef& s) {
   return static_cast<std::uint64_t>(raw);
 }
 
-MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bool rx) {
+MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db,
+                             const signals::Catalogue& catalogue, bool rx) {
   MessageBinding b;
   b.dbc_message = message_index(t, db);
   const dbc::MessageDef& m = db.messages[b.dbc_message];
@@ -91,11 +92,8 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
       sb.constant = st.number("constant");
     } else {
       const std::string name = st.string("model");
-      sb.model = model::signal_by_name(name);
-      if (!sb.model) throw st.error("model", "no model signal '" + name + "' (model/signals.h)");
-      if (rx && !model::info(*sb.model).is_input) {
-        throw st.error("model", "'" + name + "' is a model output, it cannot be received");
-      }
+      sb.model = catalogue.lookup(st, "model", name, rx, "it cannot be received", "no model signal")
+                     .binding;
       if (st.has("convert") && st.has("scale"))
         throw st.error("scale", "give convert or scale, not both");
       const double named = named_scale(st);
@@ -117,19 +115,28 @@ MessageBinding parse_message(config::StrictTable& t, const dbc::Database& db, bo
   return b;
 }
 
+/// The catalogue name of input slot `slot`.
+std::string slot_name(const signals::Catalogue& catalogue, std::size_t slot) {
+  for (const signals::Entry& e : catalogue.entries()) {
+    if (e.binding.is_input() && e.binding.slot == slot) return e.name;
+  }
+  return "slot " + std::to_string(slot);
+}
+
 }  // namespace
 
-CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& database) {
+CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& database,
+                             const signals::Catalogue& catalogue) {
   CanMapping mapping;
   if (table.has("rx")) {
     for (config::StrictTable& t : table.tables("rx", database.messages.size()))
-      mapping.rx.push_back(parse_message(t, database, true));
+      mapping.rx.push_back(parse_message(t, database, catalogue, true));
   }
   if (table.has("tx")) {
     for (config::StrictTable& t : table.tables("tx", database.messages.size()))
-      mapping.tx.push_back(parse_message(t, database, false));
+      mapping.tx.push_back(parse_message(t, database, catalogue, false));
   }
-  expand_restbus(table, database, mapping);  // after rx and tx: it skips or refuses theirs
+  expand_restbus(table, database, catalogue, mapping);  // after rx and tx: it skips or refuses theirs
   // One message per direction at most; a model input bound once.
   for (std::size_t i = 0; i < mapping.rx.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
@@ -155,13 +162,13 @@ CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& da
       }
     }
   }
-  bool seen[model::kSignalCount] = {};
+  std::vector<bool> seen(model::kSlotCount);
   for (const auto& m : mapping.rx) {
     for (const auto& s : m.signals) {
-      const auto k = model::index(*s.model);
+      const std::size_t k = s.model->slot;
       if (seen[k]) {
-        throw table.error("rx", "model signal " + std::string(model::info(*s.model).name) +
-                                    " is received from two CAN signals");
+        throw table.error(
+            "rx", "model signal " + slot_name(catalogue, k) + " is received from two CAN signals");
       }
       seen[k] = true;
     }
@@ -169,12 +176,13 @@ CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& da
   return mapping;
 }
 
-CanConfig load_can_config(const std::filesystem::path& toml_file) {
+CanConfig load_can_config(const std::filesystem::path& toml_file,
+                          const signals::Catalogue& catalogue) {
   const toml::table root = config::load_toml_file(toml_file);
   config::StrictTable table(root, toml_file, "[can mapping]");
   CanConfig config;
   config.database = dbc::load_dbc(table.existing_path("dbc"));
-  config.mapping = parse_can_mapping(table, config.database);
+  config.mapping = parse_can_mapping(table, config.database, catalogue);
   table.finish();
   return config;
 }

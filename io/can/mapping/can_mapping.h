@@ -19,7 +19,7 @@
 ///     #         crc_offset_bits, counter_offset_bits, max_delta_counter }
 ///     [[rx.signal]]
 ///     dbc = "EPS_MotorTorque"           # SG_ name in that message
-///     model = "assist_torque_nm"        # model::signal_by_name
+///     model = "assist_torque_nm"        # a signal catalogue name or alias (io/signals)
 ///     convert = "none"                  # optional named conversion, or scale/offset:
 ///     scale = 1.0                       #   model = dbc * scale + offset
 ///     offset = 0.0
@@ -53,7 +53,8 @@
 /// The alive counter must advance by 1..max_step (mod modulus) per frame; a repeated (frozen) or
 /// jumping counter is a failure that latches the message: its frames are rejected until the
 /// counter has advanced properly `unlatch_steps` times in a row (default 1), also across a
-/// timeout (sequence_checker.h). Every name is checked against the DBC and model/signals.h, and
+/// timeout (sequence_checker.h). Every name is checked against the DBC and the signal catalogue
+/// (RX binds inputs only, TX any entry; an unknown name lists the closest ones), and
 /// every error is config::ConfigError("file:line: ..."). Contradictions are errors too: counter and
 /// checksum sharing bits, a checksum byte listed twice, `convert` with `scale`, `model` with
 /// `constant`, one message both received and sent.
@@ -69,15 +70,16 @@
 #include "io/can/e2e/e2e_profile.h"
 #include "io/can/mapping/checksum.h"
 #include "io/config/strict_table.h"
+#include "io/signals/catalogue.h"
 #include "model/signals.h"
 
 namespace rig::io::can::mapping {
 
 /// One bound signal: index into MessageDef::signals, and the model side.
 struct SignalBinding {
-  std::size_t dbc_signal = 0;          ///< index in MessageDef::signals
-  std::optional<model::Signal> model;  ///< empty for a TX constant
-  double scale = 1.0;                  ///< model = dbc * scale + offset
+  std::size_t dbc_signal = 0;             ///< index in MessageDef::signals
+  std::optional<signals::Binding> model;  ///< the catalogue entry; empty for a TX constant
+  double scale = 1.0;                     ///< model = dbc * scale + offset
   double offset = 0.0;
   double fallback = 0.0;                       ///< RX: model value on timeout
   double constant = 0.0;                       ///< TX without model signal: physical DBC value sent
@@ -124,12 +126,17 @@ struct CanConfig {
   CanMapping mapping;
 };
 
-/// Reads the mapping tables `rx`, `tx` and `restbus` from `table` against `database` (does not read
-/// the `dbc` key and does not call finish() on `table`).
-CanMapping parse_can_mapping(config::StrictTable& table, const dbc::Database& database);
+/// Reads the mapping tables `rx`, `tx` and `restbus` from `table` against `database`, binding
+/// `model` names through `catalogue` (does not read the `dbc` key and does not call finish() on
+/// `table`).
+CanMapping parse_can_mapping(
+    config::StrictTable& table, const dbc::Database& database,
+    const signals::Catalogue& catalogue = signals::Catalogue::two_axle_vehicle());
 
 /// Reads a mapping TOML file: its `dbc` key (relative path) is loaded with load_dbc.
-CanConfig load_can_config(const std::filesystem::path& toml_file);
+CanConfig load_can_config(
+    const std::filesystem::path& toml_file,
+    const signals::Catalogue& catalogue = signals::Catalogue::two_axle_vehicle());
 /// The DBC a mapping file names (its `dbc` key, resolved relative to the file), without loading
 /// either: what the rig reads, so that no output may overwrite it.
 std::filesystem::path mapping_dbc_path(const std::filesystem::path& toml_file);

@@ -116,7 +116,8 @@ bool is_protected(const MessageBinding& b, const dbc::MessageDef& m, std::size_t
 }
 
 /// One `set` entry: a constant (number) or a model signal (string), converted as "none".
-SignalBinding set_value(config::StrictTable& set, const std::string& key) {
+SignalBinding set_value(config::StrictTable& set, const std::string& key,
+                        const signals::Catalogue& catalogue) {
   const toml::node* v = set.raw().get(key);
   SignalBinding sb;
   if (v->is_number()) {
@@ -125,19 +126,18 @@ SignalBinding set_value(config::StrictTable& set, const std::string& key) {
   }
   if (!v->is_string()) throw set.error(key, "expected a number or a model signal name");
   const std::string name = set.string(key);
-  sb.model = model::signal_by_name(name);
-  if (!sb.model) throw set.error(key, "no model signal '" + name + "' (model/signals.h)");
+  sb.model = catalogue.lookup(set, key, name, false, "", "no model signal").binding;
   return sb;
 }
 
 /// `set = { SIGNAL = ... }`: binds SIGNAL in every sent message that has it.
 void read_set(config::StrictTable& t, const std::string& node, const dbc::Database& db,
-              std::vector<MessageBinding>& sent) {
+              const signals::Catalogue& catalogue, std::vector<MessageBinding>& sent) {
   if (!t.has("set")) return;
   config::StrictTable set = t.table("set");
   for (const auto& entry : set.raw()) {
     const std::string key(entry.first.str());
-    const SignalBinding value = set_value(set, key);
+    const SignalBinding value = set_value(set, key, catalogue);
     bool found = false;
     for (MessageBinding& b : sent) {
       const dbc::MessageDef& m = db.messages[b.dbc_message];
@@ -160,7 +160,7 @@ void read_set(config::StrictTable& t, const std::string& node, const dbc::Databa
 }  // namespace
 
 void expand_restbus(config::StrictTable& table, const dbc::Database& database,
-                    CanMapping& mapping) {
+                    const signals::Catalogue& catalogue, CanMapping& mapping) {
   if (!table.has("restbus")) return;
   std::vector<std::string> nodes;
   const std::size_t max_nodes = std::max<std::size_t>(1, database.messages.size());
@@ -171,7 +171,7 @@ void expand_restbus(config::StrictTable& table, const dbc::Database& database,
     nodes.push_back(node);
     std::vector<MessageBinding> sent = node_messages(t, node, database, mapping);
     read_overrides(t, node, database, sent);  // before `set`: it refuses counter and checksum
-    read_set(t, node, database, sent);
+    read_set(t, node, database, catalogue, sent);
     t.finish();
     for (MessageBinding& b : sent) mapping.tx.push_back(std::move(b));
   }

@@ -32,6 +32,7 @@ namespace rig::io::can::mapping {
 /// Reads the `restbus` tables of `table` (if any) and appends their messages to mapping.tx;
 /// mapping.rx and the [[tx]] entries must be read already. Skipped messages go to
 /// mapping.warnings.
-void expand_restbus(config::StrictTable& table, const dbc::Database& database, CanMapping& mapping);
+void expand_restbus(config::StrictTable& table, const dbc::Database& database,
+                    const signals::Catalogue& catalogue, CanMapping& mapping);
 
 }  // namespace rig::io::can::mapping

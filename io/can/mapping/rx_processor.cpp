@@ -6,6 +6,14 @@
 #include "io/can/mapping/protection.h"
 
 namespace rig::io::can::mapping {
+namespace {
+
+void set(model::Signals& signals, std::size_t slot, double value, bool valid) noexcept {
+  signals.value[slot] = value;
+  signals.valid[slot] = valid;
+}
+
+}  // namespace
 
 RxProcessor::RxProcessor(const CanConfig& config) {
   messages_.reserve(config.mapping.rx.size());
@@ -36,7 +44,7 @@ RxProcessor::RxProcessor(const CanConfig& config) {
     for (const SignalBinding& sb : b.signals) {
       const dbc::SignalDef& s = def.signals[sb.dbc_signal];
       m.bound.push_back(Bound{.codec_signal = sb.dbc_signal,
-                              .model = *sb.model,
+                              .slot = sb.model->slot,
                               .scale = sb.scale,
                               .offset = sb.offset,
                               .fallback = sb.fallback,
@@ -50,7 +58,7 @@ RxProcessor::RxProcessor(const CanConfig& config) {
 }
 
 void RxProcessor::apply_fallback(Message& message, model::Signals& signals) {
-  for (const Bound& b : message.bound) signals.set(b.model, b.fallback, false);
+  for (const Bound& b : message.bound) set(signals, b.slot, b.fallback, false);
 }
 
 void RxProcessor::reset(std::int64_t now_ns, model::Signals& signals) {
@@ -83,7 +91,7 @@ void RxProcessor::decode(Message& m, const std::uint8_t* data, model::Signals& s
       physical = physical < b.minimum ? b.minimum : b.maximum;
       ++counters.out_of_range;
     }
-    signals.set(b.model, physical * b.scale + b.offset, true);
+    set(signals, b.slot, physical * b.scale + b.offset, true);
   }
 }
 

@@ -94,7 +94,7 @@ class RxProcessor {
  private:
   struct Bound {
     std::size_t codec_signal;
-    model::Signal model;
+    std::size_t slot;  ///< the input slot (model/signals.h)
     double scale, offset, fallback, minimum, maximum;
     bool clamp;
     std::string name;  // DBC signal name, for reports

@@ -62,13 +62,13 @@ void TxScheduler::start(std::int64_t loop_start_ns) {
   for (Message& m : messages_) m.next_due_ns = loop_start_ns;
 }
 
-void TxScheduler::encode(std::size_t i, const model::Signals& signals, TxFrame& frame,
+void TxScheduler::encode(std::size_t i, const signals::CycleView& cycle, TxFrame& frame,
                          io::IoCounters& counters) {
   Message& m = messages_[i];
   for (std::size_t k = 0; k < m.bound.size(); ++k) {
     const SignalBinding& b = m.bound[k];
     double physical = b.constant;
-    if (b.model) physical = (signals[*b.model] - b.offset) / b.scale;
+    if (b.model) physical = (b.model->value(cycle) - b.offset) / b.scale;
     if (m.clamp[k] && !(physical >= m.minimum[k] && physical <= m.maximum[k])) {
       // NaN goes to the minimum too: never send an undefined value.
       m.last_out_of_range[k] = physical;
@@ -90,7 +90,7 @@ void TxScheduler::encode(std::size_t i, const model::Signals& signals, TxFrame& 
   frame.len = static_cast<std::uint8_t>(m.length_bytes);
   m.codec.encode(m.physical, frame.data.data());
   for (const SignalBinding& b : m.bound) {  // after a vehicle fault, say: its SNA value
-    if (b.model && b.invalid_raw && !signals.valid[model::index(*b.model)])
+    if (b.model && b.invalid_raw && !b.model->valid(cycle))
       m.codec.signal(b.dbc_signal).insert_raw(*b.invalid_raw, frame.data.data());
   }
   if (m.counter) {
@@ -104,13 +104,13 @@ void TxScheduler::encode(std::size_t i, const model::Signals& signals, TxFrame& 
   }
 }
 
-std::size_t TxScheduler::due_frames(std::int64_t now_ns, const model::Signals& signals,
+std::size_t TxScheduler::due_frames(std::int64_t now_ns, const signals::CycleView& cycle,
                                     std::span<TxFrame> out, io::IoCounters& counters) {
   std::size_t n = 0;
   for (std::size_t i = 0; i < messages_.size() && n < out.size(); ++i) {
     Message& m = messages_[i];
     if (now_ns < m.next_due_ns || m.period_ns <= 0) continue;
-    encode(i, signals, out[n++], counters);
+    encode(i, cycle, out[n++], counters);
     // Next slot on the grid loop_start + k * period strictly after now (no burst after overrun).
     const std::int64_t k = (now_ns - loop_start_ns_) / m.period_ns + 1;
     m.next_due_ns = loop_start_ns_ + k * m.period_ns;

@@ -2,8 +2,8 @@
 /// @file
 /// The send half of the CAN mapping, independent of sockets: decides which messages are due in
 /// this loop cycle (each at its GenMsgCycleTime, phase-aligned to the loop start), and encodes
-/// them from model::Signals with alive counter and checksum filled in. The bridge only moves the
-/// resulting bytes to the transport.
+/// them from the cycle's signals and report (catalogue bindings) with alive counter and checksum
+/// filled in. The bridge only moves the resulting bytes to the transport.
 ///
 /// RT-safe: due_frames() never allocates, never throws, does no string work.
 
@@ -45,11 +45,11 @@ class TxScheduler {
   /// call). After an overrun a message is sent once, not in a burst, and its schedule skips to
   /// the next slot after now_ns on the same phase grid. Counts clamped values in
   /// counters.out_of_range (frames_sent is the transport's business).
-  std::size_t due_frames(std::int64_t now_ns, const model::Signals& signals, std::span<TxFrame> out,
-                         io::IoCounters& counters);
+  std::size_t due_frames(std::int64_t now_ns, const signals::CycleView& cycle,
+                         std::span<TxFrame> out, io::IoCounters& counters);
 
   /// Encodes message i now, regardless of schedule (advances its counter). For tests/tools.
-  void encode(std::size_t i, const model::Signals& signals, TxFrame& frame,
+  void encode(std::size_t i, const signals::CycleView& cycle, TxFrame& frame,
               io::IoCounters& counters);
 
   /// Hands every due out-of-range report to `visit(const OutOfRangeReport&)` (direction "tx"):

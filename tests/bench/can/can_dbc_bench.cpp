@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/legacy_cycle.h"
 #include "io/can/dbc/dbc_parser.h"
 #include "io/can/dbc/signal_codec.h"
 #include "io/can/mapping/rx_processor.h"
@@ -83,8 +84,9 @@ void BM_TxEncode(benchmark::State& state) {
   rig::io::IoCounters counters;
   signals[rig::model::Signal::kSteeringWheelAngle] = 0.3;
   can::TxFrame frame;
+  rig::test::LegacyCycle legacy;
   for (auto _ : state) {
-    tx.encode(0, signals, frame, counters);
+    tx.encode(0, legacy.view(signals), frame, counters);
     benchmark::DoNotOptimize(frame);
   }
 }

@@ -30,7 +30,7 @@ class NullModel final : public rig::model::SteppedModel {
 void BM_ExecutiveCycle(benchmark::State& state) {
   constexpr std::int64_t kBatch = 200;  // fewer than the ring's slots: nothing is dropped
   rig::driver::TableDriverParams table;
-  table.columns = {rig::model::Signal::kThrottlePedal};
+  table.columns = {rig::model::index(rig::model::Signal::kThrottlePedal)};
   table.times_s = {0.0, 1e6};
   table.values = {0.0, 1.0};
   rig::driver::TableDriver driver(table);  // feeds its one column

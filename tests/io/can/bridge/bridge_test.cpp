@@ -95,7 +95,8 @@ TEST(MakeCanIo, OnVcanOpensTheBusAndReportsItUp) {
   EXPECT_EQ(c.bus_state, BusState::kUp);
   model::Signals s{};
   io->receive(0, s);
-  io->transmit(0, s);  // t = 0: every TX message is due at the loop start
+  const model::ModelReport report{};
+  io->transmit(0, {s, report});  // t = 0: every TX message is due at the loop start
   io->read_counters(c);
   EXPECT_EQ(c.frames_sent, 5u);  // the five [[tx]] messages of steering-bench.toml
 }

@@ -28,7 +28,7 @@ TEST(CanMapping, ExampleMappingLoads) {
   ASSERT_TRUE(eps.checksum.has_value());
   EXPECT_EQ(eps.checksum->type, can::mapping::ChecksumType::kCrc8SaeJ1850);
   EXPECT_EQ(eps.checksum->bytes, (std::vector<std::uint8_t>{0, 1, 2, 3, 4, 5, 6}));
-  EXPECT_EQ(eps.signals[0].model, model::Signal::kAssistTorque);
+  EXPECT_EQ(eps.signals[0].model->slot, model::index(model::Signal::kAssistTorque));
   const can::mapping::MessageBinding& esc = c.mapping.rx[1];
   EXPECT_EQ(esc.checksum->type, can::mapping::ChecksumType::kXor);
   EXPECT_EQ(esc.signals[0].scale, 1e5);               // bar -> Pa

@@ -93,7 +93,8 @@ TEST(Restbus, ExampleSendsEveryCyclicGatewayMessageAtItsCycleTime) {
   ASSERT_EQ(mode->signals.size(), 2u);
   EXPECT_FALSE(mode->signals[0].model.has_value());
   EXPECT_EQ(mode->signals[0].constant, 4.0);
-  EXPECT_EQ(mode->signals[1].model, model::Signal::kVehicleSpeed);
+  ASSERT_TRUE(mode->signals[1].model.has_value());  // vehicle_speed_mps: the enum output's slot
+  EXPECT_EQ(mode->signals[1].model->slot, model::index(model::Signal::kVehicleSpeed));
   EXPECT_EQ(mode->signals[1].scale, 1.0);
   EXPECT_EQ(mode->signals[1].offset, 0.0);
   EXPECT_TRUE(find(c, "GW_Time")->signals.empty());

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/legacy_cycle.h"
 #include "io/can/dbc/dbc_parser.h"
 #include "io/can/mapping/rx_processor.h"
 #include "io/can/mapping/tx_scheduler.h"
@@ -57,6 +58,7 @@ class RxTest : public ::testing::Test {
   can::mapping::CanConfig config_;
   can::mapping::RxProcessor rx_;
   model::Signals signals_;
+  test::LegacyCycle legacy_;
   IoCounters counters_;
 };
 
@@ -246,6 +248,7 @@ class TxTest : public ::testing::Test {
   can::mapping::CanConfig config_;
   can::mapping::TxScheduler tx_;
   model::Signals signals_;
+  test::LegacyCycle legacy_;
   IoCounters counters_;
 };
 
@@ -259,7 +262,7 @@ TEST_F(TxTest, PeriodsPhaseAlignedCountersChecksums) {
   for (int k = 0; k < 100; ++k) {  // 100 loop cycles of 1 ms
     const std::int64_t now = t0 + k * kMs;
     test::AllocationCounter allocations;
-    const std::size_t n = tx_.due_frames(now, signals_, out, counters_);
+    const std::size_t n = tx_.due_frames(now, legacy_.view(signals_), out, counters_);
     allocations_in_loop += allocations.count();
     for (std::size_t i = 0; i < n; ++i) {
       for (std::size_t m = 0; m < tx_.message_count(); ++m) {
@@ -297,18 +300,18 @@ TEST_F(TxTest, PeriodsPhaseAlignedCountersChecksums) {
 TEST_F(TxTest, OverrunSendsOnceAndStaysOnGrid) {
   tx_.start(0);
   std::array<can::mapping::TxFrame, 16> out;
-  EXPECT_EQ(tx_.due_frames(0, signals_, out, counters_), 5u);
-  EXPECT_EQ(tx_.due_frames(1 * kMs, signals_, out, counters_), 0u);
+  EXPECT_EQ(tx_.due_frames(0, legacy_.view(signals_), out, counters_), 5u);
+  EXPECT_EQ(tx_.due_frames(1 * kMs, legacy_.view(signals_), out, counters_), 0u);
   // A 35 ms stall: every message once, not a burst.
-  EXPECT_EQ(tx_.due_frames(35 * kMs, signals_, out, counters_), 5u);
-  EXPECT_EQ(tx_.due_frames(39 * kMs, signals_, out, counters_), 0u);
-  EXPECT_EQ(tx_.due_frames(40 * kMs, signals_, out, counters_), 5u);  // 10 ms and 20 ms grids
-  EXPECT_EQ(tx_.due_frames(50 * kMs, signals_, out, counters_), 3u);  // 10 ms messages only
+  EXPECT_EQ(tx_.due_frames(35 * kMs, legacy_.view(signals_), out, counters_), 5u);
+  EXPECT_EQ(tx_.due_frames(39 * kMs, legacy_.view(signals_), out, counters_), 0u);
+  EXPECT_EQ(tx_.due_frames(40 * kMs, legacy_.view(signals_), out, counters_), 5u);  // 10 ms and 20 ms grids
+  EXPECT_EQ(tx_.due_frames(50 * kMs, legacy_.view(signals_), out, counters_), 3u);  // 10 ms messages only
   // A too small output array leaves the rest due for the next call.
   std::array<can::mapping::TxFrame, 2> small;
-  EXPECT_EQ(tx_.due_frames(60 * kMs, signals_, small, counters_), 2u);
-  EXPECT_EQ(tx_.due_frames(60 * kMs, signals_, small, counters_), 2u);
-  EXPECT_EQ(tx_.due_frames(60 * kMs, signals_, small, counters_), 1u);
+  EXPECT_EQ(tx_.due_frames(60 * kMs, legacy_.view(signals_), small, counters_), 2u);
+  EXPECT_EQ(tx_.due_frames(60 * kMs, legacy_.view(signals_), small, counters_), 2u);
+  EXPECT_EQ(tx_.due_frames(60 * kMs, legacy_.view(signals_), small, counters_), 1u);
 }
 
 TEST_F(TxTest, ValuesConvertedAndClamped) {
@@ -328,9 +331,9 @@ TEST_F(TxTest, ValuesConvertedAndClamped) {
     const auto& def = config_.database.messages[config_.mapping.tx[m].dbc_message];
     return dbc::SignalCodec(*def.find_signal(signal)).decode(f.data.data());
   };
-  tx_.encode(find("RIG_SteeringWheel"), signals_, f, counters_);
+  tx_.encode(find("RIG_SteeringWheel"), legacy_.view(signals_), f, counters_);
   EXPECT_NEAR(decode(find("RIG_SteeringWheel"), "SWA_Angle"), 0.5 * 180.0 / std::numbers::pi, 0.05);
-  tx_.encode(find("RIG_VehicleSpeed"), signals_, f, counters_);
+  tx_.encode(find("RIG_VehicleSpeed"), legacy_.view(signals_), f, counters_);
   EXPECT_DOUBLE_EQ(decode(find("RIG_VehicleSpeed"), "VehicleSpeed"), 320.0);
   EXPECT_EQ(counters_.out_of_range, 1u);
   std::vector<can::mapping::OutOfRangeReport> reports;
@@ -343,10 +346,10 @@ TEST_F(TxTest, ValuesConvertedAndClamped) {
   EXPECT_GT(reports[0].received, 320.0);
   EXPECT_DOUBLE_EQ(reports[0].maximum, 320.0);
   EXPECT_EQ(reports[0].count, 1u);
-  tx_.encode(find("RIG_VehicleDynamics"), signals_, f, counters_);
+  tx_.encode(find("RIG_VehicleDynamics"), legacy_.view(signals_), f, counters_);
   EXPECT_FLOAT_EQ(static_cast<float>(decode(find("RIG_VehicleDynamics"), "YawRate")),
                   static_cast<float>(-0.25 * 180.0 / std::numbers::pi));
-  tx_.encode(find("RIG_Chassis"), signals_, f, counters_);
+  tx_.encode(find("RIG_Chassis"), legacy_.view(signals_), f, counters_);
   EXPECT_EQ(f.len, 16);
   EXPECT_TRUE(f.fd);
   EXPECT_DOUBLE_EQ(decode(find("RIG_Chassis"), "EngineSpeed"), 2000.0);
@@ -375,18 +378,18 @@ TEST_F(TxTest, InvalidOutputSendsItsInvalidRawValue) {
   signals_.set(Signal::kWheelSpeedRR, 100.0);
   signals_.set(Signal::kVehicleSpeed, 30.0);  // m/s = 108 km/h
   can::mapping::TxFrame f;
-  tx_.encode(wheels, signals_, f, counters_);
+  tx_.encode(wheels, legacy_.view(signals_), f, counters_);
   EXPECT_NEAR(fl.decode(f.data.data()), 100.0 * 30.0 / std::numbers::pi, 0.05);
   signals_.valid[model::index(Signal::kWheelSpeedFL)] = false;
   signals_.valid[model::index(Signal::kVehicleSpeed)] = false;
-  tx_.encode(wheels, signals_, f, counters_);
+  tx_.encode(wheels, legacy_.view(signals_), f, counters_);
   EXPECT_EQ(fl.extract_raw(f.data.data()), 0xFFFFu);                             // SNA
   EXPECT_NEAR(rr.decode(f.data.data()), 100.0 * 30.0 / std::numbers::pi, 0.05);  // still valid
-  tx_.encode(speed, signals_, f, counters_);
+  tx_.encode(speed, legacy_.view(signals_), f, counters_);
   EXPECT_NEAR(vs.decode(f.data.data()), 108.0, 0.01);          // no `invalid`: the held value
   EXPECT_EQ(counters_.out_of_range, 0u);                       // the SNA value is not clamped
   signals_.valid[model::index(Signal::kWheelSpeedFL)] = true;  // valid again
-  tx_.encode(wheels, signals_, f, counters_);
+  tx_.encode(wheels, legacy_.view(signals_), f, counters_);
   EXPECT_NEAR(fl.decode(f.data.data()), 100.0 * 30.0 / std::numbers::pi, 0.05);
 }
 
@@ -395,6 +398,11 @@ TEST_F(TxTest, InvalidOutputSendsItsInvalidRawValue) {
 
 namespace rig::io::can {
 namespace {
+
+/// The catalogue binding of `name` (the two-axle vehicle's).
+signals::Binding binding(const char* name) {
+  return signals::Catalogue::two_axle_vehicle().find(name)->binding;
+}
 
 /// A multiplexed message sent by the rig: pages go out round-robin, each frame carries only its
 /// page's signals; received, only the present page's signal is written.
@@ -413,19 +421,20 @@ BA_ "GenMsgCycleTime" BO_ 16 10;
   b.period_ns = 10'000'000;
   b.timeout_ns = 30'000'000;
   b.signals.push_back(can::mapping::SignalBinding{
-      .dbc_signal = 1, .model = Signal::kVehicleSpeed, .scale = 1 / 3.6});
+      .dbc_signal = 1, .model = binding("vehicle_speed_mps"), .scale = 1 / 3.6});
   b.signals.push_back(can::mapping::SignalBinding{
-      .dbc_signal = 2, .model = Signal::kYawRate, .scale = std::numbers::pi / 180});
+      .dbc_signal = 2, .model = binding("yaw_rate_radps"), .scale = std::numbers::pi / 180});
   c.mapping.tx.push_back(b);
   can::mapping::TxScheduler tx(c);
   model::Signals out;
+  test::LegacyCycle legacy;
   out[Signal::kVehicleSpeed] = 10.0;  // 36 km/h
   out[Signal::kYawRate] = -0.1;       // -5.73 deg/s
   IoCounters counters;
   can::mapping::TxFrame f0, f1, f2;
-  tx.encode(0, out, f0, counters);
-  tx.encode(0, out, f1, counters);
-  tx.encode(0, out, f2, counters);
+  tx.encode(0, legacy.view(out), f0, counters);
+  tx.encode(0, legacy.view(out), f1, counters);
+  tx.encode(0, legacy.view(out), f2, counters);
   EXPECT_EQ(f0.data[0] & 3, 0);
   EXPECT_EQ(f0.data[1] | (f0.data[2] << 8), 3600);  // 36 km/h / 0.01
   EXPECT_EQ(f1.data[0] & 3, 2);

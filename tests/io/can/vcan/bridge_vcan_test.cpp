@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/legacy_cycle.h"
 #include "io/can/bridge/can_bridge.h"
 #include "io/can/mapping/checksum.h"
 #include "tests/io/can/vcan/vcan_support.h"
@@ -130,6 +131,7 @@ TEST(BridgeVcan, RecordedTrafficHasRatesCountersChecksumsAndValues) {
   ASSERT_TRUE(sync_candump(candump, "vcan0"));
   model::Signals in = can_inputs();
   model::Signals out{};
+  test::LegacyCycle legacy;
   out[Signal::kVehicleSpeed] = 10.0;       // 36 km/h
   out[Signal::kTorsionBarTorque] = 1.5;    // N m
   out[Signal::kSteeringWheelAngle] = 0.5;  // rad = 28.6 deg
@@ -142,7 +144,7 @@ TEST(BridgeVcan, RecordedTrafficHasRatesCountersChecksumsAndValues) {
     for (int k = 0; k < kCycles; ++k) {
       const std::int64_t t = loop.next();
       bridge->receive(t, in);
-      bridge->transmit(t, out);
+      bridge->transmit(t, legacy.view(out));
     }
     allocations = count.count();
   }
@@ -188,6 +190,7 @@ TEST(BridgeVcan, ClosedLoopWithVirtualEcuThenEcuKilledTimesOutWithinThreeCycles)
   ASSERT_TRUE(sync_candump(candump, "vcan0"));
   model::Signals in = can_inputs();
   model::Signals out{};
+  test::LegacyCycle legacy;
   const double torsion = 2.0;
   const double speed = 10.0;
   out[Signal::kTorsionBarTorque] = torsion;
@@ -200,7 +203,7 @@ TEST(BridgeVcan, ClosedLoopWithVirtualEcuThenEcuKilledTimesOutWithinThreeCycles)
   while (loop.cycles() < 20000 && settled < 500) {
     const std::int64_t t = loop.next();
     bridge->receive(t, in);
-    bridge->transmit(t, out);
+    bridge->transmit(t, legacy.view(out));
     const auto now_received = counters_of(*bridge).frames_received;
     if (now_received != received) last_rx = t;
     received = now_received;
@@ -224,7 +227,7 @@ TEST(BridgeVcan, ClosedLoopWithVirtualEcuThenEcuKilledTimesOutWithinThreeCycles)
   while (loop.cycles() < 40000) {
     const std::int64_t t = loop.next();
     bridge->receive(t, in);
-    bridge->transmit(t, out);
+    bridge->transmit(t, legacy.view(out));
     const auto now_received = counters_of(*bridge).frames_received;
     if (now_received != received) last_rx = t;
     received = now_received;
@@ -271,13 +274,14 @@ TEST(BridgeVcan, MisbehavingEcusAreCountedAndRejectedOrClamped) {
   for (const char* i : ifs) bridges.push_back(make_bridge(i));
   std::vector<model::Signals> in(3, can_inputs());
   model::Signals out{};
+  test::LegacyCycle legacy;
   out[Signal::kTorsionBarTorque] = 2.0;
   Loop loop;
   while (loop.cycles() < 600) {
     const std::int64_t t = loop.next();
     for (int i = 0; i < 3; ++i) {
       bridges[static_cast<std::size_t>(i)]->receive(t, in[static_cast<std::size_t>(i)]);
-      bridges[static_cast<std::size_t>(i)]->transmit(t, out);
+      bridges[static_cast<std::size_t>(i)]->transmit(t, legacy.view(out));
     }
   }
   const auto bad_sum = counters_of(*bridges[0]);
@@ -308,11 +312,12 @@ TEST(BridgeVcan, GarbageIsCountedAndDownUpIsSurvived) {
   auto bridge = make_bridge("vcan0");
   model::Signals in = can_inputs();
   model::Signals out{};
+  test::LegacyCycle legacy;
   Loop loop;
   auto cycle = [&] {
     const std::int64_t t = loop.next();
     bridge->receive(t, in);
-    bridge->transmit(t, out);
+    bridge->transmit(t, legacy.view(out));
   };
   for (int i = 0; i < 20; ++i) cycle();
   // Wrong lengths on mapped ids, an error frame; then a flood of random ids/lengths.
@@ -381,12 +386,13 @@ TEST(BridgeVcan, RemoteFramesBusOffAndClampsGiveCountsAndEvents) {
   auto bridge = make_bridge("vcan0");
   model::Signals in = can_inputs();
   model::Signals out{};
+  test::LegacyCycle legacy;
   Loop loop;
   std::vector<std::pair<std::string, std::string>> events;
   auto cycle = [&] {
     const std::int64_t t = loop.next();
     bridge->receive(t, in);
-    bridge->transmit(t, out);
+    bridge->transmit(t, legacy.view(out));
     io::IoEvent e;
     while (bridge->next_event(e)) events.emplace_back(e.name.data(), e.detail.data());
   };
@@ -483,6 +489,7 @@ TEST(BridgeVcan, EcuToRigToEcuLatency) {
   can::transport::SocketCanTransport ecu(ts);
   model::Signals in = can_inputs();
   model::Signals out{};
+  test::LegacyCycle legacy;
   std::vector<double> latencies_ms;
   std::int64_t sent_ts = 0;
   int pending_raw = 0;
@@ -509,7 +516,7 @@ TEST(BridgeVcan, EcuToRigToEcuLatency) {
     }
     bridge->receive(t, in);
     out[Signal::kTorsionBarTorque] = in[Signal::kAssistTorque];  // the "model"
-    bridge->transmit(t, out);
+    bridge->transmit(t, legacy.view(out));
     observer.drain([&](const can::transport::TransportFrame& f) {
       if (f.id == 0x200 && pending_raw != 0 && sent_ts == 0) sent_ts = f.rx_realtime_ns;
       if (f.id == 0x100 && pending_raw != 0 && sent_ts != 0) {

@@ -67,6 +67,7 @@ TEST(ClosedLoopVcan, AssistFromVirtualEcuLowersTorsionBarTorqueByTheBoostRatio) 
                                         assist_from_can);
   model::Signals s_with = driver_inputs();
   model::Signals s_without = driver_inputs();
+  model::ModelReport report_with{}, report_without{};
   for (auto* s : {&s_with, &s_without}) {
     (*s)[Signal::kGearRequest] = 4;
     (*s)[Signal::kThrottlePedal] = 0.15;
@@ -87,8 +88,10 @@ TEST(ClosedLoopVcan, AssistFromVirtualEcuLowersTorsionBarTorqueByTheBoostRatio) 
     bridge_without.receive(t, s_without);
     ASSERT_EQ(with.step(s_with), model::StepStatus::kOk);
     ASSERT_EQ(without.step(s_without), model::StepStatus::kOk);
-    bridge_with.transmit(t, s_with);
-    bridge_without.transmit(t, s_without);
+    with.fill_report(report_with);
+    without.fill_report(report_without);
+    bridge_with.transmit(t, {s_with, report_with});
+    bridge_without.transmit(t, {s_without, report_without});
     if (k >= kCycles - 500) {
       tb_with += s_with[Signal::kTorsionBarTorque];
       tb_without += s_without[Signal::kTorsionBarTorque];
