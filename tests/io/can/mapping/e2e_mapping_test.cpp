@@ -13,6 +13,7 @@
 #include "io/can/mapping/rx_processor.h"
 #include "io/can/mapping/tx_scheduler.h"
 #include "tests/support/alloc_counter.h"
+#include "tests/support/legacy_cycle.h"
 
 namespace rig::io::can {
 namespace {
@@ -42,6 +43,7 @@ TEST(E2eMapping, SentFramesPassTheProfileCheckWithCountersCountingUp) {
   const mapping::CanConfig c = bench();
   mapping::TxScheduler tx(c);
   model::Signals signals;
+  test::LegacyCycle legacy;
   signals.set(Signal::kVehicleSpeed, 20.0);
   IoCounters counters;
   for (std::size_t i = 0; i < 4; ++i) {
@@ -49,14 +51,15 @@ TEST(E2eMapping, SentFramesPassTheProfileCheckWithCountersCountingUp) {
     const std::uint32_t modulus = e2e::counter_modulus(spec.profile);
     for (std::uint32_t k = 0; k < 40; ++k) {
       mapping::TxFrame f;
-      tx.encode(i, signals, f, counters);
+      tx.encode(i, legacy.view(signals), f, counters);
       const e2e::CheckResult r = e2e::check(spec, f.data.data());
       EXPECT_TRUE(r.crc_ok) << "message " << i << " send " << k;
       EXPECT_EQ(r.counter, k % modulus) << "message " << i;
     }
   }
   mapping::TxFrame f;
-  tx.encode(4, signals, f, counters);  // CRC-32 of bytes 0..3, big-endian in bytes 4..7
+  tx.encode(4, legacy.view(signals), f,
+            counters);  // CRC-32 of bytes 0..3, big-endian in bytes 4..7
   const std::uint32_t crc = e2e::Crc(e2e::presets::kCrc32).compute(f.data.data(), 4);
   EXPECT_EQ(f.data[4], crc >> 24);
   EXPECT_EQ(f.data[7], crc & 0xFFu);
@@ -90,6 +93,7 @@ class E2eRx : public ::testing::Test {
   mapping::CanConfig config_;
   mapping::RxProcessor rx_;
   model::Signals signals_;
+  test::LegacyCycle legacy_;
   IoCounters counters_;
 };
 
@@ -151,7 +155,7 @@ TEST_F(E2eRx, NothingAllocatesPerFrame) {
   test::AllocationCounter allocations;
   feed(2, p04, kMs);
   feed(2, p04_next, 2 * kMs);
-  tx.encode(2, signals_, f, counters_);
+  tx.encode(2, legacy_.view(signals_), f, counters_);
   EXPECT_EQ(allocations.count(), 0u);
 }
 

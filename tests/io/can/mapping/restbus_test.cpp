@@ -2,6 +2,7 @@
 // `set`, overrides, the warning, every error), on the test DBC tests/io/can/restbus/ecu.dbc.
 // Expected bytes are worked out by hand from the DBC's GenSigStartValue (raw) and bit layout.
 #include "io/can/mapping/restbus.h"
+#include "tests/support/legacy_cycle.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -104,36 +105,37 @@ TEST(Restbus, FramesCarryTheStartValuesRawTheSetValuesCountersAndChecksums) {
   const CanConfig c = load_can_config(kDir + "/ecu-mapping.toml");
   TxScheduler tx(c);
   model::Signals signals{};
-  signals[model::Signal::kVehicleSpeed] = 12.5;  // m/s -> GW_RefSpeed raw 1250
+  signals[model::Signal::kVehicleSpeed] = 12.5;
+  test::LegacyCycle legacy;  // m/s -> GW_RefSpeed raw 1250
   IoCounters counters;
   TxFrame f;
-  tx.encode(tx_index(c, "GW_Ignition"), signals, f, counters);
+  tx.encode(tx_index(c, "GW_Ignition"), legacy.view(signals), f, counters);
   EXPECT_EQ(f.id, 256u);
   EXPECT_EQ(f.data[0], 0x12);  // GW_IgnitionState 2 | GW_Terminal15 1 << 4
   EXPECT_EQ(f.data[1], 0x00);  // counter, first frame
   EXPECT_EQ(f.data[7], crc8_sae_j1850(f.data.data(), 7));
-  tx.encode(tx_index(c, "GW_Ignition"), signals, f, counters);
+  tx.encode(tx_index(c, "GW_Ignition"), legacy.view(signals), f, counters);
   EXPECT_EQ(f.data[1], 0x01);  // counter advances
   EXPECT_EQ(f.data[7], crc8_sae_j1850(f.data.data(), 7));
-  tx.encode(tx_index(c, "GW_VehicleMode"), signals, f, counters);
+  tx.encode(tx_index(c, "GW_VehicleMode"), legacy.view(signals), f, counters);
   EXPECT_EQ(f.data[0], 4);                      // set GW_Mode = 4 (start value 3)
   EXPECT_EQ(f.data[1] | f.data[2] << 8, 1250);  // set GW_RefSpeed = vehicle_speed_mps
   EXPECT_EQ(f.data[7], xor8(f.data.data(), 7));
-  tx.encode(tx_index(c, "GW_Engine"), signals, f, counters);
+  tx.encode(tx_index(c, "GW_Engine"), legacy.view(signals), f, counters);
   EXPECT_EQ(f.data[0] | f.data[1] << 8, 3200);  // GW_EngineSpeed raw 3200 = 800 rpm
   EXPECT_EQ(f.data[2], 130);                    // GW_EngineTemp raw 130 = 90 degC
   EXPECT_EQ(f.data[3], 1);                      // GW_EngineRunning
-  tx.encode(tx_index(c, "GW_Body"), signals, f, counters);
+  tx.encode(tx_index(c, "GW_Body"), legacy.view(signals), f, counters);
   EXPECT_EQ(f.data[0], 1);
   EXPECT_EQ(f.data[1], 100);                                        // 10 degC
   EXPECT_EQ(f.data[2] | f.data[3] << 8 | f.data[4] << 16, 123456);  // 12345.6 km
-  tx.encode(tx_index(c, "GW_Time"), signals, f, counters);
+  tx.encode(tx_index(c, "GW_Time"), legacy.view(signals), f, counters);
   EXPECT_EQ(f.id, 992u);
   EXPECT_EQ(f.data[0], 12);
   EXPECT_EQ(f.data[1], 34);
   EXPECT_EQ(f.data[2], 56);
   EXPECT_EQ(f.data[3] | f.data[4] << 8, 2026);
-  tx.encode(tx_index(c, "GW_Chassis"), signals, f, counters);
+  tx.encode(tx_index(c, "GW_Chassis"), legacy.view(signals), f, counters);
   EXPECT_EQ(f.data[2], 5);         // GW_ChassisStatus
   EXPECT_EQ(f.data[3], 1);         // GW_ParkBrake
   EXPECT_EQ(f.data[1] & 0x0F, 0);  // E2E P01 counter, first frame (its CRC: the python check)
@@ -147,9 +149,11 @@ TEST(Restbus, SchedulerSendsEachMessageAtItsPeriod) {
   model::Signals signals{};
   IoCounters counters;
   std::array<TxFrame, 16> out{};
-  std::array<int, 1024> sends{};             // per CAN id
+  std::array<int, 1024> sends{};  // per CAN id
+  test::LegacyCycle legacy;
+  const io::signals::CycleView view = legacy.view(signals);
   for (std::int64_t k = 0; k < 2000; ++k) {  // 2 s of 1 ms cycles
-    const std::size_t n = tx.due_frames(k * 1'000'000, signals, out, counters);
+    const std::size_t n = tx.due_frames(k * 1'000'000, view, out, counters);
     for (std::size_t i = 0; i < n; ++i) ++sends[out[i].id];
   }
   EXPECT_EQ(sends[256], 200);  // 10 ms
@@ -169,13 +173,15 @@ TEST(Restbus, IndependentCheckerAcceptsTheScheduledFrames) {
   tx.start(0);
   model::Signals signals{};
   signals[model::Signal::kVehicleSpeed] = 12.5;
+  test::LegacyCycle legacy;
+  const io::signals::CycleView view = legacy.view(signals);
   IoCounters counters;
   std::array<TxFrame, 16> out{};
   const std::string log = ::testing::TempDir() + "/rig_restbus_test_sent.log";
   {
     std::ofstream f(log);
     for (std::int64_t k = 0; k < 3000; ++k) {
-      const std::size_t n = tx.due_frames(k * 1'000'000, signals, out, counters);
+      const std::size_t n = tx.due_frames(k * 1'000'000, view, out, counters);
       for (std::size_t i = 0; i < n; ++i) {
         char line[160];
         int at = std::snprintf(line, sizeof line, "%lld %03X#", static_cast<long long>(k),

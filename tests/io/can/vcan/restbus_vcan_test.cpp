@@ -17,6 +17,7 @@
 #include "io/can/bridge/can_bridge.h"
 #include "tests/io/can/vcan/vcan_support.h"
 #include "tests/support/alloc_counter.h"
+#include "tests/support/legacy_cycle.h"
 
 namespace rig::io::can {
 namespace {
@@ -69,6 +70,8 @@ TEST(RestbusVcan, GatewayMessagesAtTheirCyclesWithStartValuesCountersChecksums) 
   std::vector<std::uint64_t> sent_after(kCycles, 0);  // frames_sent after each cycle
   const std::int64_t t0 = test::monotonic_ns();
   std::uint64_t allocations = 0;
+  test::LegacyCycle legacy;
+  const io::signals::CycleView view = legacy.view(out);
   {
     test::AllocationCounter count;
     for (int k = 0; k < kCycles; ++k) {
@@ -76,7 +79,7 @@ TEST(RestbusVcan, GatewayMessagesAtTheirCyclesWithStartValuesCountersChecksums) 
       timespec ts{now / 1'000'000'000, now % 1'000'000'000};
       clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr);
       bridge->receive(now, in);
-      bridge->transmit(now, out);
+      bridge->transmit(now, view);
       IoCounters c;
       bridge->read_counters(c);
       sent_after[static_cast<std::size_t>(k)] = c.frames_sent;
