@@ -55,16 +55,8 @@ CLI::Validator cpu_validator() {
       "CPU");
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  rig::install_signal_handlers();  // before anything else (rig/signals.h)
-  CLI::App app{"rig: a hard-real-time hardware-in-the-loop vehicle simulator"};
-  app.set_version_flag("--version", std::string("rig ") + RIG_VERSION);
-  app.require_subcommand(1);
-
-  rig::RunOptions run;
-  std::string stall;
+/// `rig run`'s options into `run` (and the test hook's text into `stall`).
+void add_run(CLI::App& app, rig::RunOptions& run, std::string& stall) {
   auto* run_cmd = app.add_subcommand("run", "run the simulator loop");
   run_cmd->add_option("--config", run.config_file, "configuration file (TOML)")->required();
   run_cmd->add_option("--duration", run.duration_s,
@@ -82,39 +74,64 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--require-rt", run.require_rt,
                     "fail if SCHED_FIFO, mlockall or the CPU pinning is refused");
   run_cmd->add_option("--inject-stall", stall, "test hook: CYCLE:MS")->group("");
+}
 
-  std::vector<std::string> check_files;
-  std::string check_kind;
+/// `rig check FILE... [--kind KIND]`.
+const CLI::App* add_check(CLI::App& app, std::vector<std::string>& files, std::string& kind) {
   std::vector<std::string> kind_names;
-  for (const auto& kind : rig::file_kinds()) kind_names.emplace_back(kind.name);
+  for (const auto& k : rig::file_kinds()) kind_names.emplace_back(k.name);
   auto* check_cmd = app.add_subcommand(
       "check",
       "validate files without running: run configurations, combinations, vehicles, "
       "CAN mappings, DBCs (the kind is recognised from the content)");
-  check_cmd->add_option("FILE", check_files, "files to check")->required();
-  check_cmd->add_option("--kind", check_kind, "check every FILE as this kind")
+  check_cmd->add_option("FILE", files, "files to check")->required();
+  check_cmd->add_option("--kind", kind, "check every FILE as this kind")
       ->check(CLI::IsMember(kind_names));
+  return check_cmd;
+}
 
-  std::string signals_config;
-  bool signals_json = false;
+/// `rig signals CONFIG [--json]`.
+const CLI::App* add_signals(CLI::App& app, std::string& config, bool& json) {
   auto* signals_cmd = app.add_subcommand(
       "signals",
       "print the signal catalogue of a run configuration's model: name, unit, direction, min, "
       "max, aliases (docs/signals.md)");
-  signals_cmd->add_option("CONFIG", signals_config, "run configuration (TOML)")->required();
-  signals_cmd->add_flag("--json", signals_json,
-                        "a JSON array of {name, unit, direction, min, "
-                        "max, aliases}");
+  signals_cmd->add_option("CONFIG", config, "run configuration (TOML)")->required();
+  signals_cmd->add_flag("--json", json,
+                        "a JSON array of {name, unit, direction, min, max, aliases}");
+  return signals_cmd;
+}
+
+/// --inject-stall CYCLE:MS into `run`.
+void parse_stall(const std::string& stall, rig::RunOptions& run) {
+  if (stall.empty()) return;
+  const auto colon = stall.find(':');
+  if (colon == std::string::npos) throw CLI::ValidationError("--inject-stall", "expected CYCLE:MS");
+  run.stall_cycle = std::stoull(stall.substr(0, colon));
+  run.stall_ms = std::stoll(stall.substr(colon + 1));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  rig::install_signal_handlers();  // before anything else (rig/signals.h)
+  CLI::App app{"rig: a hard-real-time hardware-in-the-loop vehicle simulator"};
+  app.set_version_flag("--version", std::string("rig ") + RIG_VERSION);
+  app.require_subcommand(1);
+
+  rig::RunOptions run;
+  std::string stall;
+  add_run(app, run, stall);
+  std::vector<std::string> check_files;
+  std::string check_kind;
+  const CLI::App* check_cmd = add_check(app, check_files, check_kind);
+  std::string signals_config;
+  bool signals_json = false;
+  const CLI::App* signals_cmd = add_signals(app, signals_config, signals_json);
 
   try {
     app.parse(argc, argv);
-    if (!stall.empty()) {
-      const auto colon = stall.find(':');
-      if (colon == std::string::npos)
-        throw CLI::ValidationError("--inject-stall", "expected CYCLE:MS");
-      run.stall_cycle = std::stoull(stall.substr(0, colon));
-      run.stall_ms = std::stoll(stall.substr(colon + 1));
-    }
+    parse_stall(stall, run);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
