@@ -77,8 +77,8 @@ for k in range(LATER + 1):
                f"cycle {s['cycle']}: wheel{w} applied {p} Pa, brake torque {t} N m")
 yaw_can, yaw_ref = at(state, i0 + LATER, "unit0_wz_radps"), at(ref_state, j0 + LATER, "unit0_wz_radps")
 dev = abs(yaw_can - yaw_ref) / abs(yaw_ref)
-print(f"t0 {t0:.2f} s (cycle {sig[i0]['cycle']}), yaw rate 0.5 s later: CAN {yaw_can:.6f} rad/s, "
-      f"table driver {yaw_ref:.6f} rad/s, deviation {100 * dev:.4f} %")
+print(f"t0 {t0:.2f} s (cycle {sig[i0]['cycle']}), yaw rate 0.5 s later: CAN {yaw_can:.9f} rad/s, "
+      f"table driver {yaw_ref:.9f} rad/s, deviation {100 * dev:.3g} %")
 expect(yaw_ref > 0.05, f"one-sided (left) braking yaws left: {yaw_ref} rad/s")
 expect(dev <= 0.05, f"yaw rate within 5 %: CAN {yaw_can}, table driver {yaw_ref}")
 json.dump({"t0_s": t0, "cycle0": int(sig[i0]["cycle"]), "yaw_can_radps": yaw_can,
