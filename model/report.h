@@ -55,6 +55,11 @@ struct SteeringReport {
   double rack_travel_m = 0;
   double rack_force_n = 0;
   double assist_torque_nm = 0;
+  /// The drag links' / tie rods' forces on the rack from the first steered axle's left and right
+  /// wheels (F_S1, F_S2 of Fig. 7), resisting positive rack travel [N]; their sum is rack_force_n
+  /// for a one-steered-axle vehicle. What a rack-in-the-loop bench's load actuators apply.
+  double tie_rod_force_left_n = 0;
+  double tie_rod_force_right_n = 0;
 };
 
 struct DrivetrainReport {

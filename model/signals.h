@@ -27,6 +27,12 @@ enum class Signal : std::uint16_t {
   kSteeringOverlayAngleCmd,  ///< overriding gear: angle superimposed at the pinion [rad]
   kIgnition,                 ///< terminal state: 0 off, 1 accessory (Kl. 75), 2 on (Kl. 15),
                              ///< 3 start (Kl. 50); not valid (unrouted): on [-]
+  // the steering bench (issue 15; model/vehicle/steering/README.md)
+  kSteeringWheelFeedbackTorqueCmd,  ///< steer-by-wire: hand-wheel actuator torque [N m]
+  kRackForceCmd,                    ///< steer-by-wire: road-wheel actuator force on the rack [N]
+  kRackPositionCmd,                 ///< steer-by-wire: road-wheel actuator rack position [m]
+  kRackPositionMeasured,            ///< rack-in-the-loop: the real rack's travel [m]
+  kRackSpeedMeasured,               ///< rack-in-the-loop: the real rack's speed [m/s]
   // ---- outputs ----
   kVehicleSpeed,        ///< longitudinal speed of the (first) unit's CG [m/s]
   kWheelSpeedFL,        ///< wheel spin rate, front left [rad/s]
@@ -77,6 +83,11 @@ inline constexpr std::array<SignalInfo, kSignalCount> kSignalTable{{
     {Signal::kGearRequest, "gear_request", "1", true},
     {Signal::kSteeringOverlayAngleCmd, "steering_overlay_angle_cmd_rad", "rad", true},
     {Signal::kIgnition, "ignition_state", "1", true},
+    {Signal::kSteeringWheelFeedbackTorqueCmd, "steering_wheel_feedback_torque_cmd_nm", "N m", true},
+    {Signal::kRackForceCmd, "rack_force_cmd_n", "N", true},
+    {Signal::kRackPositionCmd, "rack_position_cmd_m", "m", true},
+    {Signal::kRackPositionMeasured, "rack_position_measured_m", "m", true},
+    {Signal::kRackSpeedMeasured, "rack_speed_measured_mps", "m/s", true},
     {Signal::kVehicleSpeed, "vehicle_speed_mps", "m/s", false},
     {Signal::kWheelSpeedFL, "wheel_speed_fl_radps", "rad/s", false},
     {Signal::kWheelSpeedFR, "wheel_speed_fr_radps", "rad/s", false},
@@ -138,6 +149,15 @@ constexpr InputRange input_range(Signal s) {
       return {-1.0, 1.0};  // +-57 deg at the pinion, beyond any superposition gear's travel
     case Signal::kIgnition:
       return {0.0, 3.0, true};
+    case Signal::kSteeringWheelFeedbackTorqueCmd:
+      return {-100.0, 100.0};
+    case Signal::kRackForceCmd:
+      return {-5e4, 5e4};  // beyond any passenger car or light truck rack
+    case Signal::kRackPositionCmd:
+    case Signal::kRackPositionMeasured:
+      return {-0.3, 0.3};
+    case Signal::kRackSpeedMeasured:
+      return {-5.0, 5.0};
     default:
       return {0.0, 0.0};  // outputs: no source sets them
   }

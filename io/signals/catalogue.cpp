@@ -28,6 +28,11 @@ constexpr InputName kUnit1Inputs[] = {
     {Signal::kThrottlePedal, "unit1.throttle_pedal"},
     {Signal::kGearRequest, "unit1.gear_request"},
     {Signal::kIgnition, "unit1.ignition_state"},
+    {Signal::kSteeringWheelFeedbackTorqueCmd, "unit1.steering.wheel_feedback_torque_cmd_nm"},
+    {Signal::kRackForceCmd, "unit1.steering.rack_force_cmd_n"},
+    {Signal::kRackPositionCmd, "unit1.steering.rack_position_cmd_m"},
+    {Signal::kRackPositionMeasured, "unit1.steering.rack_position_measured_m"},
+    {Signal::kRackSpeedMeasured, "unit1.steering.rack_speed_measured_mps"},
 };
 
 /// The enum's outputs: the entry each one's name is an alias of ('#': the last axle).
@@ -55,6 +60,9 @@ constexpr InputName kLegacyOutputs[] = {
     {Signal::kPositionY, "unit1.position_y_m"},
     {Signal::kHeading, "unit1.yaw_rad"},
 };
+
+/// Field-table outputs that a bench names without the unit prefix (the rack-in-the-loop forces).
+constexpr std::string_view kShortOutputs[] = {"tie_rod_force_left_n", "tie_rod_force_right_n"};
 
 constexpr std::string_view kCorners[] = {"wheel_fl", "wheel_fr", "wheel_rl", "wheel_rr"};
 
@@ -208,6 +216,8 @@ void Catalogue::add_aliases() {
     }
   }
   for (const InputName& i : kUnit1Inputs) alias(i.name, std::string(model::info(i.signal).name));
+  for (const std::string_view o : kShortOutputs)
+    alias("unit1.steering." + std::string(o), std::string(o));
   alias("unit1.brake_circuit_front_pa", "brake_pressure_front_pa");
   alias("unit1.brake_circuit_rear_pa", "brake_pressure_rear_pa");
   const std::string last = std::to_string(shape_.axle_count[0]);

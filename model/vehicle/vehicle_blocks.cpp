@@ -42,7 +42,8 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
       framework_(p, state, work),
       shafts_(make_shafts(p, state, work)),
       drivetrain_(p.drivetrain, state, inputs, work, shafts_.get()),
-      steering_(p.steering, state, inputs, work),
+      steering_system_(std::make_unique<ColumnSteering>(p.steering, state, inputs)),
+      steering_(*steering_system_, state, work),
       wheel_stage_(p, state, inputs, work, shafts_.get(), drivetrain_),
       drivetrain_stepper_(drivetrain_),
       steering_stepper_(steering_),
@@ -98,9 +99,9 @@ void VehicleBlocks::update_outputs() noexcept {
   const Mat3 rot = body_to_road(y(3), y(4), y(5));
   for (int i = 0; i < work_.wheel_count; ++i)
     work_.wheels[static_cast<std::size_t>(i)].out = framework_.wheel_forces(rot, y, z, i);
-  const double tb = steering_.torsion_bar_torque_nm(state_.steering_y, state_.steering_z);
-  work_.torsion_bar_torque_nm = tb;
-  work_.assist_torque_nm = steering_.assist_torque_nm(tb);
+  work_.torsion_bar_torque_nm =
+      steering_system_->torsion_bar_torque_nm(state_.steering_y, state_.steering_z);
+  work_.assist_torque_nm = steering_system_->assist_torque_nm(state_.steering_y, state_.steering_z);
   work_.engine_torque_nm =
       delivered_engine_torque_nm(p_.drivetrain, inputs_.throttle, drivetrain_.engine_speed_radps(),
                                  work_.engine_torque_cut_nm, inputs_.ignition_on);

@@ -17,7 +17,8 @@
 #include "model/tire/tmeasy_force_element.h"
 #include "model/vehicle/drivetrain.h"
 #include "model/vehicle/half_shafts.h"
-#include "model/vehicle/steering.h"
+#include "model/vehicle/steering/column_steering.h"
+#include "model/vehicle/steering/simple_steering.h"
 #include "model/vehicle/suspension_kinematics.h"
 #include "model/vehicle/vehicle_framework.h"
 #include "model/vehicle/wheel_spin.h"
@@ -50,7 +51,10 @@ class VehicleBlocks {
   [[nodiscard]] const solver::SequentialStepper& sequence() const noexcept { return sequence_; }
   [[nodiscard]] VehicleFramework& framework() noexcept { return framework_; }
   [[nodiscard]] const VehicleFramework& framework() const noexcept { return framework_; }
-  [[nodiscard]] Steering& steering() noexcept { return steering_; }
+  /// The steering block (its coordinates are state.steering_y, steering_z).
+  [[nodiscard]] SimpleSteering& steering() noexcept { return steering_; }
+  /// The rack side's system (sec. 2.2): begin_step before the implicit step, report values.
+  [[nodiscard]] SteeringSystem& steering_system() noexcept { return *steering_system_; }
   [[nodiscard]] const Drivetrain& drivetrain() const noexcept { return drivetrain_; }
   /// The framework's stepper: M_VI and q of the step (for the force-coupled combination).
   [[nodiscard]] const solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization>&
@@ -67,7 +71,8 @@ class VehicleBlocks {
   VehicleFramework framework_;
   std::unique_ptr<HalfShafts> shafts_;  ///< none without driven wheels
   Drivetrain drivetrain_;
-  Steering steering_;
+  std::unique_ptr<SteeringSystem> steering_system_;
+  SimpleSteering steering_;
   WheelSpinStage wheel_stage_;
   std::vector<std::unique_ptr<tire::TmeasyForceElement>> tires_;
   std::vector<std::unique_ptr<solver::ForceElementStepper<2>>> tire_steppers_;

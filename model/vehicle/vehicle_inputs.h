@@ -26,6 +26,19 @@ struct VehicleInputs {
   /// Ignition on or start (terminal 15 / 50): the engine runs and the EPS assists. Off or
   /// accessory: no combustion torque (the engine drags), no assist (boost curve nor input).
   bool ignition_on = true;
+  // ---- the steering bench (model/vehicle/steering/README.md) ----
+  /// Steer-by-wire: the hand-wheel actuator's torque on the steering wheel (0 when not valid).
+  double feedback_torque_cmd_nm = 0;
+  /// Steer-by-wire: the road-wheel actuator's command, a force on the rack or a rack position;
+  /// each only while valid (else the actuator holds: no force / the last position).
+  double rack_force_cmd_n = 0;
+  bool rack_force_cmd_valid = false;
+  double rack_position_cmd_m = 0;
+  bool rack_position_cmd_valid = false;
+  /// Rack-in-the-loop: the real rack's travel and speed while valid (both valid and finite).
+  double rack_position_measured_m = 0;
+  double rack_speed_measured_mps = 0;
+  bool rack_measured_valid = false;
 };
 
 }  // namespace rig::model::vehicle

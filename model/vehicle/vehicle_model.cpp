@@ -75,7 +75,7 @@ void VehicleModel::set_inputs(const Signals& signals) noexcept {
 
 void VehicleModel::begin_step(double h) noexcept {
   saved_ = state_;
-  follow_overlay(h);
+  blocks_->steering_system().begin_step(h);  // the overriding gear follows its command
   // the drive train's step: ratios, lock-up and torque cut from the start state, frozen
   const Engagement e = select_gear(p_.drivetrain, inputs_, state_.drivetrain_z(1), state_);
   work_.turbine_ratio = e.turbine_ratio;
@@ -91,14 +91,6 @@ void VehicleModel::begin_step(double h) noexcept {
   work_.lockup_fraction = state_.lockup_fraction;
   blocks_->update_contacts();
   blocks_->sequence().begin_step(h);  // eq. (8) up to z^u = M_VI^-1 q of the framework (eq. 46)
-}
-
-void VehicleModel::follow_overlay(double h) noexcept {
-  const double max_step = p_.steering.overlay_rate_max_radps * h;
-  const double move =
-      std::clamp(inputs_.overlay_angle_rad - state_.overlay_rad, -max_step, max_step);
-  state_.overlay_rad += move;
-  state_.overlay_rate_radps = move / h;
 }
 
 void VehicleModel::finish_step(double h, ConstVectorRef extra_rate) noexcept {

@@ -75,7 +75,7 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   [[nodiscard]] const VehicleWorkspace& workspace() const noexcept { return work_; }
   [[nodiscard]] VehicleFramework& framework() noexcept { return blocks_->framework(); }
   [[nodiscard]] const VehicleFramework& framework() const noexcept { return blocks_->framework(); }
-  [[nodiscard]] Steering& steering() noexcept { return blocks_->steering(); }
+  [[nodiscard]] SimpleSteering& steering() noexcept { return blocks_->steering(); }
   /// Vertical tire force of wheel i after the last step [N].
   [[nodiscard]] double wheel_load_n(int i) const noexcept;
   /// At rest at the design position with the engine idling, at (x, y, yaw).
@@ -115,9 +115,6 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   std::unique_ptr<VehicleBlocks> blocks_;
   Eigen::VectorXd zero_rate_;
   StepStatus last_status_ = StepStatus::kOk;
-
-  /// The overriding gear's angle towards the overlay command, rate limited (begin_step).
-  void follow_overlay(double h) noexcept;
 };
 
 }  // namespace rig::model::vehicle

@@ -66,8 +66,19 @@ struct AxleParams {
   AxleKinematicsParams kinematics{};
 };
 
-/// Enhanced rack-and-pinion steering (sec. 2.2).
+/// Which steering model (sec. 2.2, Fig. 7): simple - the wheels' steer follows the rack through
+/// quasi-static tie rods (the steering linkage inside the wheels' kinematics); enhanced - the
+/// steering system apart, coupled to each steered wheel's knuckle only by the compliant drag
+/// links' / tie rods' forces F_S1, F_S2 (model/vehicle/steering/README.md).
+enum class SteeringModel : std::uint8_t { kSimple, kEnhanced };
+/// What moves the rack: the column (torsion bar, EPS assist, overriding gear), steer-by-wire
+/// actuators, or a real rack on a bench (rack-in-the-loop: its measured travel; enhanced only).
+enum class SteeringSystemKind : std::uint8_t { kColumn, kSteerByWire, kRackInTheLoop };
+
+/// Rack-and-pinion steering (sec. 2.2).
 struct SteeringParams {
+  SteeringModel model = SteeringModel::kSimple;             ///< [steering] model
+  SteeringSystemKind system = SteeringSystemKind::kColumn;  ///< [steering] system
   bool torque_input =
       false;  ///< false: wheel driven by angle (steering robot); true: by hand torque
   double wheel_inertia_kgm2 = 0.04;  ///< steering wheel + upper column

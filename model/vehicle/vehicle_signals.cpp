@@ -45,6 +45,17 @@ VehicleInputs read_inputs(const VehicleParams& params, int unit, const Signals& 
   r.gear_request = static_cast<int>(std::lround(in(Signal::kGearRequest, 99.0)));
   // 0 off, 1 accessory: no engine, no assist; 2 on, 3 start (no starter: as on); unrouted: on
   r.ignition_on = std::lround(in(Signal::kIgnition, 2.0)) >= 2;
+  const auto valid = [&](Signal id) {
+    return s.valid[index(id)] && std::isfinite(s.value[index(id)]);
+  };
+  r.feedback_torque_cmd_nm = in(Signal::kSteeringWheelFeedbackTorqueCmd, 0.0);
+  r.rack_force_cmd_valid = valid(Signal::kRackForceCmd);
+  r.rack_force_cmd_n = in(Signal::kRackForceCmd, 0.0);
+  r.rack_position_cmd_valid = valid(Signal::kRackPositionCmd);
+  r.rack_position_cmd_m = in(Signal::kRackPositionCmd, 0.0);
+  r.rack_measured_valid = valid(Signal::kRackPositionMeasured) && valid(Signal::kRackSpeedMeasured);
+  r.rack_position_measured_m = in(Signal::kRackPositionMeasured, 0.0);
+  r.rack_speed_measured_mps = in(Signal::kRackSpeedMeasured, 0.0);
   return r;
 }
 
@@ -130,6 +141,8 @@ void fill_report(const VehicleState& state, const VehicleInputs& in, const Vehic
   report.steering.rack_travel_m = state.steering_y(1);
   report.steering.rack_force_n = work.rack_force_n;
   report.steering.assist_torque_nm = work.assist_torque_nm;
+  report.steering.tie_rod_force_left_n = work.tie_rod_force_left_n;
+  report.steering.tie_rod_force_right_n = work.tie_rod_force_right_n;
   report.drivetrain.engine_speed_radps = state.drivetrain_z(0);
   report.drivetrain.engine_torque_nm = work.engine_torque_nm;
   report.drivetrain.gear = state.gear;

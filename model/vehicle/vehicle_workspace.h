@@ -73,6 +73,9 @@ struct VehicleWorkspace {
   double carrier_speed_radps = 0;   ///< differential input speed in wheel units, newest
   // steering (the wheel-spin stage for the rack force; finish_step for the rest)
   double rack_force_n = 0;  ///< sum of the tie-rod forces on the rack
+  /// The first steered axle's left and right tie-rod forces on the rack (ModelReport).
+  double tie_rod_force_left_n = 0;
+  double tie_rod_force_right_n = 0;
   double torsion_bar_torque_nm = 0;
   double assist_torque_nm = 0;  ///< applied (input or boost curve)
   double engine_torque_nm = 0;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "model/tire/tmeasy_tire.h"
+#include "model/vehicle/steering/steering_axis.h"
 
 namespace rig::model::vehicle {
 
@@ -22,6 +23,7 @@ void WheelSpinStage::tie_rods() noexcept {
   const double rack = state_.steering_y(1);
   const SteeringParams& sp = p_.steering;
   double rack_force = 0;
+  int first_steered = -1;  // the first steered axle's left wheel (F_S1, F_S2 in the report)
   for (int i = 0; i < work_.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
     WheelWork& w = work_.wheels[k];
@@ -30,19 +32,29 @@ void WheelSpinStage::tie_rods() noexcept {
     // aligning torque M_z = -(n(s_y) + caster trail) F_y: TMeasy's pneumatic trail n falls with
     // the lateral slip (Rill 2011, sec. 3.4.3), so the steering goes light near the limit; it
     // loads the rack by virtual work, F_rack = -M_z dgamma/du (eq. 29)
-    const double lat_force_n = state_.lateral_force_n[k];
-    const double aligning_nm =
-        tire::aligning_torque_nm(axle.tire.tmeasy, w.tire.kinematics, w.load_n, lat_force_n) -
-        axle.caster_trail_m * lat_force_n;
-    w.tie_rod_force_n = -aligning_nm * w.steer_d_du;
+    SteeringAxisLoads loads;
+    loads.lat_force_n = state_.lateral_force_n[k];
+    loads.load_n = w.load_n;
+    loads.aligning_nm =
+        tire::aligning_torque_nm(axle.tire.tmeasy, w.tire.kinematics, w.load_n, loads.lat_force_n);
+    const int side = (k % 2 == 0) ? 1 : -1;
+    const double axis_moment_nm = steering_axis_moment_nm(axle, loads, w.steer_kinematic_rad, side);
+    w.tie_rod_force_n = -axis_moment_nm * w.steer_d_du;
     state_.rack_at_wheel_m[k] = rack - w.tie_rod_force_n / sp.tie_rod_stiffness_npm;
     // gamma of eq. (29) at the new rack travel, linear in u about the step's pose
     set_wheel_orientation(
         w, w.steer_kinematic_rad + w.steer_d_du * (state_.rack_at_wheel_m[k] - w.steer_at_rack_m),
         w.camber_rad);
     rack_force += w.tie_rod_force_n;
+    if (first_steered < 0) first_steered = i;
   }
   work_.rack_force_n = rack_force;
+  if (first_steered >= 0) {
+    work_.tie_rod_force_left_n =
+        work_.wheels[static_cast<std::size_t>(first_steered)].tie_rod_force_n;
+    work_.tie_rod_force_right_n =
+        work_.wheels[static_cast<std::size_t>(first_steered) + 1].tie_rod_force_n;
+  }
 }
 
 void WheelSpinStage::advance(double h) noexcept {

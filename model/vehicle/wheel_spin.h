@@ -13,7 +13,6 @@
 #include "model/solver/stage.h"
 #include "model/vehicle/drivetrain.h"
 #include "model/vehicle/half_shafts.h"
-#include "model/vehicle/steering.h"
 
 namespace rig::model::vehicle {
 

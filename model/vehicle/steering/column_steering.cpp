@@ -1,19 +1,29 @@
-#include "model/vehicle/steering.h"
+#include "model/vehicle/steering/column_steering.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rig::model::vehicle {
 
-Steering::Steering(const SteeringParams& p, VehicleState& state, const VehicleInputs& inputs,
-                   const VehicleWorkspace& work)
-    : p_(p), state_(state), inputs_(inputs), work_(work) {}
+ColumnSteering::ColumnSteering(const SteeringParams& p, VehicleState& state,
+                               const VehicleInputs& inputs)
+    : p_(p), state_(state), inputs_(inputs) {}
 
-void Steering::mass_matrix(const Vector& y, Matrix& m) const noexcept {
+void ColumnSteering::begin_step(double h) noexcept {
+  // the overriding gear follows its command at most at its motor's speed
+  const double max_step = p_.overlay_rate_max_radps * h;
+  const double move =
+      std::clamp(inputs_.overlay_angle_rad - state_.overlay_rad, -max_step, max_step);
+  state_.overlay_rad += move;
+  state_.overlay_rate_radps = move / h;
+}
+
+void ColumnSteering::mass_matrix(const Vector& y, Matrix& m) const noexcept {
   (void)y;
   m << p_.wheel_inertia_kgm2, 0, 0, p_.rack_mass_kg;
 }
 
-double Steering::torsion_bar_torque_nm(const Vector& y, const Vector& z) const noexcept {
+double ColumnSteering::torsion_bar_torque_nm(const Vector& y, const Vector& z) const noexcept {
   const double i = p_.rack_per_pinion_m_per_rad;
   // the overriding gear turns the pinion against the torsion bar's lower end: that end is at
   // u / i_SB - overlay (the overlay as its rate limit lets it follow the command)
@@ -21,13 +31,17 @@ double Steering::torsion_bar_torque_nm(const Vector& y, const Vector& z) const n
          p_.torsion_bar_damping_nmspr * (z(0) - z(1) / i + state_.overlay_rate_radps);
 }
 
-double Steering::assist_torque_nm(double torsion_bar_nm) const noexcept {
+double ColumnSteering::assist_for_torsion_bar_nm(double torsion_bar_nm) const noexcept {
   if (!inputs_.ignition_on) return 0.0;  // the EPS is not powered
   if (inputs_.assist_from_input) return inputs_.assist_input_nm;
   return p_.assist_max_nm * std::tanh(p_.assist_gain * torsion_bar_nm / p_.assist_max_nm);
 }
 
-void Steering::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
+double ColumnSteering::assist_torque_nm(const Vector& y, const Vector& z) const noexcept {
+  return assist_for_torsion_bar_nm(torsion_bar_torque_nm(y, z));
+}
+
+void ColumnSteering::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
   const double tb = torsion_bar_torque_nm(y, z);
   double hand = inputs_.hand_torque_cmd_nm;
   if (!p_.torque_input) {
@@ -36,11 +50,11 @@ void Steering::applied_forces(const Vector& y, const Vector& z, Vector& q) const
   }
   const double friction = p_.rack_friction_n * std::tanh(z(1) / p_.rack_friction_speed_mps);
   q(0) = hand - tb - p_.column_damping_nmspr * z(0);
-  q(1) = (tb + assist_torque_nm(tb)) / p_.rack_per_pinion_m_per_rad - work_.rack_force_n - friction;
+  q(1) = (tb + assist_for_torsion_bar_nm(tb)) / p_.rack_per_pinion_m_per_rad - friction;
 }
 
-bool Steering::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
-                               Matrix& dq_dz) const noexcept {
+void ColumnSteering::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
+                                     Matrix& dq_dz) const noexcept {
   const double i = p_.rack_per_pinion_m_per_rad;
   const double c = p_.torsion_bar_stiffness_nmpr, d = p_.torsion_bar_damping_nmspr;
   double dassist = p_.assist_gain;  // d T_a / d T_tb of the boost curve
@@ -57,7 +71,6 @@ bool Steering::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
   const double g = (1 + dassist) / i;
   dq_dy << -robot_c - c, c / i, g * c, -g * c / i;
   dq_dz << -robot_d - d - p_.column_damping_nmspr, d / i, g * d, -g * d / i - dfric;
-  return true;
 }
 
 }  // namespace rig::model::vehicle

@@ -1,0 +1,42 @@
+#pragma once
+/// @file
+/// The column steering system (sec. 2.2): steering wheel + column inertia, torsion bar (its
+/// torque is what the assist senses), steering box ratio i_SB (rack travel per pinion angle),
+/// rack mass, rack dry friction (regularized, its steep slope in M_VI keeps it stable), assist
+/// torque on the pinion (input signal or built-in boost curve). The wheel is driven by hand
+/// torque or, in angle mode, by a stiff position servo (a steering robot). The optional
+/// overriding gear in its simple form: an overlay angle added at the pinion (the torsion bar's
+/// lower end at u / i_SB - overlay), so with the hand wheel held the rack moves by overlay x
+/// i_SB; the overlay follows its command at most at overlay_rate_max_radps (VehicleState).
+/// Ignition off: no assist (neither the input nor the boost curve).
+
+#include "model/vehicle/steering/steering_system.h"
+#include "model/vehicle/vehicle_inputs.h"
+#include "model/vehicle/vehicle_params.h"
+
+namespace rig::model::vehicle {
+
+class ColumnSteering final : public SteeringSystem {
+ public:
+  /// Reads the overlay from state (state.overlay_rad, overlay_rate_radps) and the driver's and
+  /// assist inputs.
+  ColumnSteering(const SteeringParams& p, VehicleState& state, const VehicleInputs& inputs);
+  void begin_step(double h) noexcept override;
+  void mass_matrix(const Vector& y, Matrix& m) const noexcept override;
+  void applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept override;
+  void force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
+                       Matrix& dq_dz) const noexcept override;
+  [[nodiscard]] double torsion_bar_torque_nm(const Vector& y,
+                                             const Vector& z) const noexcept override;
+  [[nodiscard]] double assist_torque_nm(const Vector& y, const Vector& z) const noexcept override;
+  /// Assist torque for a torsion bar torque (input signal or boost curve; 0 with the ignition
+  /// off) [N m].
+  [[nodiscard]] double assist_for_torsion_bar_nm(double torsion_bar_nm) const noexcept;
+
+ private:
+  const SteeringParams& p_;
+  VehicleState& state_;
+  const VehicleInputs& inputs_;
+};
+
+}  // namespace rig::model::vehicle
