@@ -182,7 +182,7 @@ std::optional<double> read_steering(StrictTable t, model::vehicle::SteeringParam
                                          : SteeringSystemKind::kRackInTheLoop;
   // issue 15 builds these; until then a clear refusal rather than a silent simple model
   if (s.model != SteeringModel::kSimple) throw t.error("model", "\"enhanced\" is not built yet");
-  if (s.system != SteeringSystemKind::kColumn)
+  if (s.system == SteeringSystemKind::kRackInTheLoop)
     throw t.error("system", "\"" + system + "\" is not built yet");
   s.torque_input = t.choice("input", "angle", {"angle", "torque"}) == "torque";
   s.wheel_inertia_kgm2 = t.number_in("wheel_inertia_kgm2", 1e-3, 10);
@@ -201,6 +201,19 @@ std::optional<double> read_steering(StrictTable t, model::vehicle::SteeringParam
   if (t.has("trail_m")) trail_m = t.number_in("trail_m", 0, 0.5);
   s.assist_gain = t.number_in("assist_gain", 0, 100);
   s.assist_max_nm = t.number_in("assist_max_nm", 1e-3, 1e4);
+  // the overriding gear (steering/README.md "overriding gear"); defaults: today's simple gear
+  s.overlay_ratio = t.number_in("overlay_ratio", 1.0, 1e-3, 1e3);
+  s.overlay_bandwidth_hz = t.number_in("overlay_bandwidth_hz", 0.0, 0, 1e3);
+  s.overlay_rate_max_radps = t.number_in("overlay_rate_max_radps", 10.0, 1e-3, 1e3);
+  if (s.system == SteeringSystemKind::kSteerByWire) {  // steering/README.md "steer-by-wire"
+    s.feedback_torque_max_nm = t.number_in("feedback_torque_max_nm", 0, 1e3);
+    s.rack_actuator_ratio_m_per_rad = t.number_in("rack_actuator_ratio_m_per_rad", 1e-5, 1);
+    s.rack_actuator_inertia_kgm2 = t.number_in("rack_actuator_inertia_kgm2", 0, 1);
+    s.rack_actuator_force_max_n = t.number_in("rack_actuator_force_max_n", 0, 1e6);
+    s.rack_actuator_damping_nspm = t.number_in("rack_actuator_damping_nspm", 0, 1e6);
+    s.rack_actuator_time_constant_s = t.number_in("rack_actuator_time_constant_s", 1e-4, 10);
+    s.rack_actuator_bandwidth_hz = t.number_in("rack_actuator_bandwidth_hz", 0.1, 100);
+  }
   t.finish();
   return trail_m;
 }

@@ -19,6 +19,7 @@
 #include "model/vehicle/half_shafts.h"
 #include "model/vehicle/steering/column_steering.h"
 #include "model/vehicle/steering/simple_steering.h"
+#include "model/vehicle/steering/steer_by_wire.h"
 #include "model/vehicle/suspension_kinematics.h"
 #include "model/vehicle/vehicle_framework.h"
 #include "model/vehicle/wheel_spin.h"

@@ -100,6 +100,30 @@ struct SteeringParams {
   /// for the boosted torsion bar on the rack mass) into a two-step cycle of the linearized
   /// implicit Euler that the saturated boost curve and rack friction cannot damp.
   double overlay_rate_max_radps = 10.0;
+  /// The superposition (planetary) gear's ratio i_ov = overlay motor angle / its angle at the
+  /// pinion: pinion angle = steering-wheel-side angle + motor angle / i_ov. The command stays
+  /// the overlay at the pinion (steering_overlay_angle_cmd_rad); i_ov scales the motor side
+  /// (VehicleState::overlay_motor_rad, the motor's speed = i_ov x the pinion overlay's rate).
+  double overlay_ratio = 1.0;
+  /// The position-controlled overlay motor as a first-order lag with this -3 dB frequency
+  /// (before the rate limit); 0: ideal (the command as the rate limit lets it through).
+  double overlay_bandwidth_hz = 0.0;
+  // ---- steer-by-wire ([steering] system = "steer_by_wire", steering/README.md) ----
+  /// Hand-wheel actuator: the feedback motor's torque limit on the steering wheel.
+  double feedback_torque_max_nm = 10.0;
+  /// Road-wheel actuator: motor + gear on the rack, rack travel per motor angle, the motor's
+  /// (rotor + gear) inertia (reflected on the rack as J / r^2) and its force limit at the rack.
+  double rack_actuator_ratio_m_per_rad = 0.0013;
+  double rack_actuator_inertia_kgm2 = 2e-4;
+  double rack_actuator_force_max_n = 12000.0;
+  /// The motor's and screw's viscous friction at the rack, always acting (powered or not): it
+  /// damps the free rack against the tires' aligning stiffness [N s/m].
+  double rack_actuator_damping_nspm = 1500.0;
+  /// Force command: the motor's force follows it as a first-order lag (current loop).
+  double rack_actuator_time_constant_s = 0.005;
+  /// Position command: the actuator's PD position servo, designed for this -3 dB frequency of
+  /// rack travel / command on the rack + reflected motor mass.
+  double rack_actuator_bandwidth_hz = 10.0;
   /// Which assist acts (a routing decision, set by the rig from [routing] assist_torque_nm):
   /// true: the assist_torque_nm input (the ECU's motor torque) while it is valid, the boost
   /// curve while it is not; false: always the built-in boost curve.

@@ -39,6 +39,9 @@ void place_at_rest(VehicleState& s, const VehicleParams& params, double x_m, dou
   s.lockup_fraction = 0;
   s.overlay_rad = 0;
   s.overlay_rate_radps = 0;
+  s.overlay_motor_rad = 0;
+  s.rack_actuator_force_n = 0;
+  s.rack_servo_integral_n = 0;
   s.rack_at_wheel_m.fill(0);
   s.lateral_force_n.fill(0);
   s.acceleration_mps2.setZero();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace rig::model::vehicle {
 
@@ -10,12 +11,18 @@ ColumnSteering::ColumnSteering(const SteeringParams& p, VehicleState& state,
     : p_(p), state_(state), inputs_(inputs) {}
 
 void ColumnSteering::begin_step(double h) noexcept {
-  // the overriding gear follows its command at most at its motor's speed
+  // The overriding gear: the command is the overlay at the pinion; its position-controlled motor
+  // (a first-order lag at overlay_bandwidth_hz, exact over the step; none at 0) moves it, at
+  // most at its speed limit.
+  double want = inputs_.overlay_angle_rad - state_.overlay_rad;
+  if (p_.overlay_bandwidth_hz > 0)
+    want *= -std::expm1(-2 * std::numbers::pi * p_.overlay_bandwidth_hz * h);
   const double max_step = p_.overlay_rate_max_radps * h;
-  const double move =
-      std::clamp(inputs_.overlay_angle_rad - state_.overlay_rad, -max_step, max_step);
+  const double move = std::clamp(want, -max_step, max_step);
   state_.overlay_rad += move;
   state_.overlay_rate_radps = move / h;
+  // the superposition gear: pinion angle = wheel-side angle + motor angle / i_ov
+  state_.overlay_motor_rad = p_.overlay_ratio * state_.overlay_rad;
 }
 
 void ColumnSteering::mass_matrix(const Vector& y, Matrix& m) const noexcept {
