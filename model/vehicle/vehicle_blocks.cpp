@@ -35,9 +35,10 @@ DrivenWheels driven_wheels(const VehicleParams& p) noexcept {
 namespace {
 /// What moves the rack, as [steering] system says (rack-in-the-loop: the bench helper's).
 std::unique_ptr<SteeringSystem> make_steering_system(const SteeringParams& p, VehicleState& state,
-                                                     const VehicleInputs& inputs) {
+                                                     const VehicleInputs& inputs,
+                                                     const VehicleWorkspace& work) {
   if (p.system == SteeringSystemKind::kSteerByWire)
-    return std::make_unique<SteerByWire>(p, state, inputs);
+    return std::make_unique<SteerByWire>(p, state, inputs, work);
   return std::make_unique<ColumnSteering>(p, state, inputs);
 }
 }  // namespace
@@ -52,7 +53,7 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
       framework_(p, state, work),
       shafts_(make_shafts(p, state, work)),
       drivetrain_(p.drivetrain, state, inputs, work, shafts_.get()),
-      steering_system_(make_steering_system(p.steering, state, inputs)),
+      steering_system_(make_steering_system(p.steering, state, inputs, work)),
       steering_(*steering_system_, state, work),
       wheel_stage_(p, state, inputs, work, shafts_.get(), drivetrain_),
       drivetrain_stepper_(drivetrain_),

@@ -17,12 +17,13 @@ double reflected_rack_mass_kg(const SteeringParams& p) {
 // with F_I' = k_i (u_cmd - u): m s^3 + k_d s^2 + k_p s + k_i = m (s^3 + 2 w s^2 + 2 w^2 s + w^3),
 // the 3rd-order Butterworth lag k_i / (...), whose -3 dB point is w = 2 pi f_bw (k_d includes
 // the actuator's viscous friction). The tires' rack
-// stiffness adds to k_p (a small shift); the integral holds the position against their load.
+// stiffness would add to k_p: the load feedforward (servo_force_n) takes it out.
 SteerByWire::SteerByWire(const SteeringParams& p, VehicleState& state,
-                         const VehicleInputs& inputs)
+                         const VehicleInputs& inputs, const VehicleWorkspace& work)
     : p_(p),
       state_(state),
       inputs_(inputs),
+      work_(work),
       rack_mass_kg_(reflected_rack_mass_kg(p)),
       servo_w_radps_(2 * std::numbers::pi * p.rack_actuator_bandwidth_hz),
       servo_stiffness_npm_(2 * rack_mass_kg_ * servo_w_radps_ * servo_w_radps_),
@@ -63,8 +64,12 @@ double SteerByWire::hand_torque_nm(const Vector& y, const Vector& z) const noexc
          p_.robot_damping_nmspr * z(0);
 }
 
+// + the load feedforward: the tie rods' force on the rack as the actuator measured it in the
+// last step (its rack force sensor / motor-current estimate), so that the tires' rack stiffness
+// does not shift the designed bandwidth
 double SteerByWire::servo_force_n(const Vector& y, const Vector& z) const noexcept {
-  return state_.rack_servo_integral_n - servo_stiffness_npm_ * y(1) - servo_damping_nspm_ * z(1);
+  return state_.rack_servo_integral_n - servo_stiffness_npm_ * y(1) - servo_damping_nspm_ * z(1) +
+         work_.rack_force_n;
 }
 
 double SteerByWire::rack_actuator_force_n(const Vector& y, const Vector& z) const noexcept {
