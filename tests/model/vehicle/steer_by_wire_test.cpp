@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -313,6 +314,52 @@ TEST(SteerByWire, NoValidCommandNoActuatorForce) {
   s.set(Signal::kRackForceCmd, 500, false);
   while (m.time_s() < 0.4) ASSERT_EQ(m.step(s), StepStatus::kOk);
   EXPECT_NEAR(report(m).steering.assist_torque_nm, 0, 1e-9);
+}
+
+}  // namespace
+}  // namespace rig::model::vehicle
+
+namespace rig::model::vehicle {
+namespace {
+
+// A sedan-sbw file without one actuator key: the loader names the key; a column file with an
+// actuator key: refused as an unknown key (they act only with system = "steer_by_wire").
+std::string message_of_loading(const std::string& text) {
+  const std::string path = testing::TempDir() + "sbw_config_test.toml";
+  {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    std::fputs(text.c_str(), f);
+    std::fclose(f);
+  }
+  std::string what;
+  try {
+    (void)io::config::load_vehicle_file(path);
+  } catch (const std::exception& e) {
+    what = e.what();
+  }
+  std::remove(path.c_str());
+  return what;
+}
+
+std::string file_text(const char* name) {
+  std::FILE* f = std::fopen((std::string(RIG_SOURCE_DIR "/config/vehicles/") + name).c_str(), "r");
+  std::string s;
+  for (int c = std::fgetc(f); c != EOF; c = std::fgetc(f)) s.push_back(static_cast<char>(c));
+  std::fclose(f);
+  return s;
+}
+
+TEST(SteerByWireConfig, MissingAndMisplacedKeysAreNamed) {
+  std::string sbw = file_text("sedan-sbw.toml");
+  const std::string line = "rack_actuator_bandwidth_hz = 10.0\n";
+  ASSERT_NE(sbw.find(line), std::string::npos);
+  sbw.erase(sbw.find(line), line.size());
+  EXPECT_NE(message_of_loading(sbw).find("rack_actuator_bandwidth_hz"), std::string::npos);
+  std::string column = file_text("sedan.toml");
+  const std::string anchor = "[steering]\n";
+  column.insert(column.rfind(anchor) + anchor.size(), "rack_actuator_force_max_n = 1000.0\n");
+  const std::string what = message_of_loading(column);
+  EXPECT_NE(what.find("unknown key 'rack_actuator_force_max_n'"), std::string::npos) << what;
 }
 
 }  // namespace
