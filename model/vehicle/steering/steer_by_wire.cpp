@@ -18,8 +18,8 @@ double reflected_rack_mass_kg(const SteeringParams& p) {
 // the 3rd-order Butterworth lag k_i / (...), whose -3 dB point is w = 2 pi f_bw (k_d includes
 // the actuator's viscous friction). The tires' rack
 // stiffness would add to k_p: the load feedforward (servo_force_n) takes it out.
-SteerByWire::SteerByWire(const SteeringParams& p, VehicleState& state,
-                         const VehicleInputs& inputs, const VehicleWorkspace& work)
+SteerByWire::SteerByWire(const SteeringParams& p, VehicleState& state, const VehicleInputs& inputs,
+                         const VehicleWorkspace& work)
     : p_(p),
       state_(state),
       inputs_(inputs),

@@ -101,7 +101,8 @@ Ratios realised_ratio(double speed_mps, double amplitude_rad, bool compensate) {
     double overlay = r.steering.wheel_angle_rad * (i_base / i_v - 1);
     if (compensate) {
       const double tb = r.steering.torsion_bar_torque_nm;
-      const double tie_rod_n = (tb + r.steering.assist_torque_nm) / (2 * sp.rack_per_pinion_m_per_rad);
+      const double tie_rod_n =
+          (tb + r.steering.assist_torque_nm) / (2 * sp.rack_per_pinion_m_per_rad);
       overlay += tb / sp.torsion_bar_stiffness_nmpr +
                  tie_rod_n / sp.tie_rod_stiffness_npm / sp.rack_per_pinion_m_per_rad;
     }
@@ -129,10 +130,11 @@ TEST(OverridingGear, RealisesASpeedDependentSteeringRatio) {
     const double want = demanded_ratio(v);
     const Ratios raw = realised_ratio(v, a, false);
     const Ratios comp = realised_ratio(v, a, true);
-    std::printf("%.0f km/h: demanded %.2f; gear %.4f (%+.3f %%); wheels %.3f (%+.2f %%), "
-                "compensated %.3f (%+.2f %%)\n", v * 3.6, want, raw.gear,
-                100 * (raw.gear / want - 1), raw.wheels, 100 * (raw.wheels / want - 1),
-                comp.wheels, 100 * (comp.wheels / want - 1));
+    std::printf(
+        "%.0f km/h: demanded %.2f; gear %.4f (%+.3f %%); wheels %.3f (%+.2f %%), "
+        "compensated %.3f (%+.2f %%)\n",
+        v * 3.6, want, raw.gear, 100 * (raw.gear / want - 1), raw.wheels,
+        100 * (raw.wheels / want - 1), comp.wheels, 100 * (comp.wheels / want - 1));
     EXPECT_NEAR(raw.gear, want, 1e-3 * want);
     EXPECT_NEAR(comp.wheels, want, 0.02 * want);
   }
@@ -164,13 +166,13 @@ TEST(SteerByWire, RackFollowsAPositionStep) {
       peak = std::max(peak, m.state().steering_y(1));
     }
     const ModelReport r = report(m);
-    std::printf("%.0f m/s: rack %.5f m after 1.5 s, peak %.5f m, F_rack %.1f N, steer %.4f "
-                "%.4f rad\n", v, r.steering.rack_travel_m, peak, r.steering.rack_force_n,
-                r.units[0].wheels[0].steer_angle_rad, r.units[0].wheels[1].steer_angle_rad);
+    std::printf(
+        "%.0f m/s: rack %.5f m after 1.5 s, peak %.5f m, F_rack %.1f N, steer %.4f "
+        "%.4f rad\n",
+        v, r.steering.rack_travel_m, peak, r.steering.rack_force_n,
+        r.units[0].wheels[0].steer_angle_rad, r.units[0].wheels[1].steer_angle_rad);
     EXPECT_NEAR(r.steering.rack_travel_m, 0.005, 0.005 * 0.01);
-    if (v == 0) {  // rolling, the tires damp some of it
-      EXPECT_GT(peak, 0.005 * 1.03);
-    }
+    EXPECT_GT(peak, 0.005 * 1.03);
     EXPECT_LT(peak, 0.005 * 1.15);
     EXPECT_GT(mean_front_steer_rad(r), 0.8 * 0.005 / 0.13);  // the wheels followed the rack
   }
@@ -200,7 +202,11 @@ double rack_gain(double speed_mps, double f_hz, double amplitude_m) {
 }
 
 // The -3 dB frequency of rack travel / command, interpolated (in dB over log f) between the
-// sweep's frequencies, at stand-still and at 20 m/s: within 10 % of rack_actuator_bandwidth_hz.
+// sweep's frequencies, at stand-still and at 20 m/s: within 10 % of rack_actuator_bandwidth_hz
+// (measured 9.67 Hz for 10 Hz: the step's discretisation). At 20 m/s the tires load the rack
+// with ~3e5 N/m (a third of k_p); without the servo's load feedforward the -3 dB point fell to
+// 8.7 Hz with a -2.4 dB dip at 5 Hz; with it (the simple model's tie-rod force is the same
+// last-step value the servo feeds forward) the response is the unloaded one.
 TEST(SteerByWire, PositionServoBandwidthIsTheConfiguredOne) {
   const VehicleParams p = load("sedan-sbw.toml");
   const double f_bw = p.steering.rack_actuator_bandwidth_hz;
@@ -243,8 +249,10 @@ TEST(SteerByWire, FeedbackTorqueAcceleratesTheReleasedHandWheel) {
     const double t = m.time_s(), w = m.state().steering_z(0) - w0;
     const double torque = std::min(cmd, p.steering.feedback_torque_max_nm);
     const double exact = torque / d * (1 - std::exp(-d * t / j));
-    std::printf("feedback %.0f N m: mean acceleration %.3f rad/s^2 over %.3f s, T/J %.3f, "
-                "damped %.3f\n", cmd, w / t, t, torque / j, exact / t);
+    std::printf(
+        "feedback %.0f N m: mean acceleration %.3f rad/s^2 over %.3f s, T/J %.3f, "
+        "damped %.3f\n",
+        cmd, w / t, t, torque / j, exact / t);
     EXPECT_NEAR(w / t, torque / j, 0.01 * torque / j);
     EXPECT_NEAR(w, exact, 2e-3 * exact);
   }
@@ -260,8 +268,8 @@ TEST(SteerByWire, ForceCommandMovesTheRackAgainstTheTires) {
   const VehicleParams p = load("sedan-sbw.toml");
   const SteeringParams& sp = p.steering;
   const double i_sb = sp.rack_per_pinion_m_per_rad, tau = sp.rack_actuator_time_constant_s;
-  const double mass = sp.rack_mass_kg + sp.rack_actuator_inertia_kgm2 /
-                                            std::pow(sp.rack_actuator_ratio_m_per_rad, 2);
+  const double mass = sp.rack_mass_kg +
+                      sp.rack_actuator_inertia_kgm2 / std::pow(sp.rack_actuator_ratio_m_per_rad, 2);
   const double a = sp.rack_actuator_damping_nspm / mass;
   for (const double f : {150.0, -150.0}) {
     VehicleModel m(p, 1e-3);
@@ -276,11 +284,14 @@ TEST(SteerByWire, ForceCommandMovesTheRackAgainstTheTires) {
     while (m.time_s() < 0.05 - 1e-9) ASSERT_EQ(m.step(s), StepStatus::kOk);
     const double t = m.time_s();
     const double speed =
-        f / mass * ((1 - std::exp(-a * t)) / a - (std::exp(-t / tau) - std::exp(-a * t)) / (a - 1 / tau));
+        f / mass *
+        ((1 - std::exp(-a * t)) / a - (std::exp(-t / tau) - std::exp(-a * t)) / (a - 1 / tau));
     const ModelReport r = report(m);
-    std::printf("F %+.0f N at rest: actuator %.2f N at tau (1 - 1/e: %.2f); rack speed %.5f m/s "
-                "at %.3f s (hand %.5f), tie rods %+.2f N\n", f, f_tau, f * (1 - std::exp(-1.0)),
-                m.state().steering_z(1), t, speed, r.steering.rack_force_n);
+    std::printf(
+        "F %+.0f N at rest: actuator %.2f N at tau (1 - 1/e: %.2f); rack speed %.5f m/s "
+        "at %.3f s (hand %.5f), tie rods %+.2f N\n",
+        f, f_tau, f * (1 - std::exp(-1.0)), m.state().steering_z(1), t, speed,
+        r.steering.rack_force_n);
     EXPECT_NEAR(f_tau, f * (1 - std::exp(-1.0)), 0.02 * std::abs(f));
     EXPECT_NEAR(m.state().steering_z(1), speed, 0.02 * std::abs(speed));
   }
@@ -292,10 +303,11 @@ TEST(SteerByWire, ForceCommandMovesTheRackAgainstTheTires) {
     s.set(Signal::kRackForceCmd, f);
     while (m.time_s() < 3.0) ASSERT_EQ(m.step(s), StepStatus::kOk);
     const ModelReport r = report(m);
-    std::printf("F %+.0f N at 10 m/s, 3 s: rack %+.5f m, tie rods %+.1f N (left %+.1f, right "
-                "%+.1f), steer %+.4f rad, rack speed %.1e m/s\n", f, r.steering.rack_travel_m,
-                r.steering.rack_force_n, r.steering.tie_rod_force_left_n,
-                r.steering.tie_rod_force_right_n, mean_front_steer_rad(r), m.state().steering_z(1));
+    std::printf(
+        "F %+.0f N at 10 m/s, 3 s: rack %+.5f m, tie rods %+.1f N (left %+.1f, right "
+        "%+.1f), steer %+.4f rad, rack speed %.1e m/s\n",
+        f, r.steering.rack_travel_m, r.steering.rack_force_n, r.steering.tie_rod_force_left_n,
+        r.steering.tie_rod_force_right_n, mean_front_steer_rad(r), m.state().steering_z(1));
     EXPECT_GT(r.steering.rack_travel_m * f, 0);
     EXPECT_GT(mean_front_steer_rad(r) * f, 0);
     EXPECT_NEAR(r.steering.rack_force_n, f, 0.05 * std::abs(f));
@@ -310,7 +322,8 @@ TEST(SteerByWire, NoValidCommandNoActuatorForce) {
   s[Signal::kGearRequest] = 0;
   s.set(Signal::kRackForceCmd, 500, true);
   while (m.time_s() < 0.2) ASSERT_EQ(m.step(s), StepStatus::kOk);
-  EXPECT_GT(report(m).steering.assist_torque_nm, 0.9 * 500 * m.params().steering.rack_per_pinion_m_per_rad);
+  EXPECT_GT(report(m).steering.assist_torque_nm,
+            0.9 * 500 * m.params().steering.rack_per_pinion_m_per_rad);
   s.set(Signal::kRackForceCmd, 500, false);
   while (m.time_s() < 0.4) ASSERT_EQ(m.step(s), StepStatus::kOk);
   EXPECT_NEAR(report(m).steering.assist_torque_nm, 0, 1e-9);
