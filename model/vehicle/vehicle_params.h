@@ -93,6 +93,10 @@ struct SteeringParams {
   double rack_friction_speed_mps = 0.002;
   double steering_arm_m = 0.13;          ///< wheel steer = rack travel / arm (small angles)
   double tie_rod_stiffness_npm = 1.5e6;  ///< per side, as seen at the rack
+  /// Enhanced model: the tie rod's damping, rack to knuckle, per side [N s/m].
+  double tie_rod_damping_nspm = 3000;
+  /// Enhanced model: knuckle + wheel inertia about the steering axis, per wheel [kg m^2].
+  double knuckle_inertia_kgm2 = 1.0;
   double assist_gain = 4.0;              ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
   double assist_max_nm = 12.0;
   /// The overriding gear's fastest overlay at the pinion (its motor's speed limit). A step
