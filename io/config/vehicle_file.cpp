@@ -112,6 +112,7 @@ model::vehicle::AxleKinematicsParams read_kinematics(StrictTable t) {
   k.camber_per_travel_radpm = t.number_in("camber_per_travel_radpm", 0, -20, 20);
   k.toe_rad = t.number_in("toe_rad", 0, -0.1, 0.1);
   k.bump_steer_radpm = t.number_in("bump_steer_radpm", 0, -5, 5);
+  k.ackermann_percent = t.number_in("ackermann_percent", 0, -100, 150);
   k.bicubic = t.choice("interpolation", "bicubic", {"bicubic", "bilinear"}) == "bicubic";
   if (auto g = t.optional_table("grid")) {
     k.grid.z_min = g->number_in("z_min_m", -1, 1);
@@ -132,6 +133,10 @@ model::vehicle::AxleKinematicsParams read_kinematics(StrictTable t) {
                                " values (z-major)");
       return v;
     };
+    if (k.ackermann_percent != 0)
+      throw t.error("ackermann_percent",
+                    "ackermann_percent applies to generated steer tables, not to given ones "
+                    "(give each wheel's gamma_rad instead)");
     k.x_m = table("x_m");
     k.y_m = table("y_m");
     k.alpha_rad = table("alpha_rad");

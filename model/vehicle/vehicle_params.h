@@ -37,6 +37,10 @@ struct AxleKinematicsParams {
   double camber_per_travel_radpm = 0;  ///< dalpha/dz [rad/m]
   double toe_rad = 0;                  ///< static gamma of the left wheel (+: front to the left)
   double bump_steer_radpm = 0;         ///< dgamma/dz [rad/m]
+  /// Generated steer tables: Ackermann share [%]. 100: the inner wheel steers more so that both
+  /// wheels' axes meet on the line of the unsteered axles (cot(outer) - cot(inner) = track /
+  /// wheelbase); 0: both wheels asin(u / arm), the right the mirror of the left.
+  double ackermann_percent = 0;
   /// Given tables of the left wheel, z-major (values[k * u_count + l]); empty: generated.
   kinematics::Grid2D grid{};
   std::vector<double> x_m, y_m, alpha_rad, beta_rad, gamma_rad;

@@ -11,6 +11,7 @@
 
 #include "io/config/vehicle_file.h"
 #include "model/tire/tmeasy_tire.h"
+#include "model/vehicle/suspension_kinematics.h"
 #include "model/vehicle/vehicle_model.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
@@ -177,8 +178,8 @@ TEST(EnhancedSteering, StaticTieRodForceIsTheAxisMomentOverTheLever) {
   const double arm = p.steering.steering_arm_m;
   ModelReport report;
   m.fill_report(report);
-  const double reported[2] = {report.units[0].steering.tie_rod_force_left_n,
-                              report.units[0].steering.tie_rod_force_right_n};
+  const double reported[2] = {report.steering.tie_rod_force_left_n,
+                              report.steering.tie_rod_force_right_n};
   for (int i = 0; i < 2; ++i) {
     const WheelWork& w = m.workspace().wheels[static_cast<std::size_t>(i)];
     const double fy = m.state().lateral_force_n[static_cast<std::size_t>(i)];
@@ -193,7 +194,7 @@ TEST(EnhancedSteering, StaticTieRodForceIsTheAxisMomentOverTheLever) {
     EXPECT_NEAR(reported[i], expected, 0.02 * std::abs(expected));
   }
   // the rack carries both
-  EXPECT_NEAR(report.units[0].steering.rack_force_n, reported[0] + reported[1], 1e-9);
+  EXPECT_NEAR(report.steering.rack_force_n, reported[0] + reported[1], 1e-9);
 }
 
 template <int N>
@@ -251,6 +252,48 @@ TEST(EnhancedSteering, AnalyticJacobiansAndNoAllocationPerStep) {
   EXPECT_LT((ay - fy).norm(), 1e-4 * fy.norm()) << ay << "\n" << fy;
   EXPECT_LT((az - fz).norm(), 1e-3 * fz.norm()) << az << "\n" << fz;
   EXPECT_DOUBLE_EQ(ay(2, 1), p.steering.tie_rod_stiffness_npm);
+}
+
+
+// Ackermann (issue 15, item 2): each steered wheel its own eq. (29) steer table. At 100 % the
+// inner and outer steer satisfy cot(outer) - cot(inner) = track / wheelbase (both axes meet on
+// the rear axle's line), at 50 % half of it; 0 % gives the old mirrored tables exactly.
+TEST(Ackermann, InnerAndOuterSteerMeetOnTheRearAxleLine) {
+  const VehicleParams base = sedan(SteeringModel::kSimple);
+  const double track = base.axles[0].track_m;
+  const double wheelbase = base.axles[0].position_x_m - base.axles[1].position_x_m;
+  const SuspensionKinematics old_tables(base);
+  for (double percent : {100.0, 50.0}) {
+    VehicleParams p = base;
+    p.axles[0].kinematics.ackermann_percent = percent;
+    const SuspensionKinematics k(p);
+    for (double u : {0.01, 0.0234, 0.04, -0.05, 0.07}) {
+      // left turn for u > 0: the left wheel is the inner one
+      const double left = k.pose(0, 0.0, u).gamma_rad.value;
+      const double right = k.pose(1, 0.0, u).gamma_rad.value;
+      const double inner = u > 0 ? left : right, outer = u > 0 ? right : left;
+      const double lhs = 1 / std::tan(std::abs(outer)) - 1 / std::tan(std::abs(inner));
+      const double want = 0.01 * percent * track / wheelbase;
+      std::printf("ackermann %.0f %%, u %+.4f m: inner %.4f rad, outer %.4f rad, cot(o) - cot(i) "
+                  "%.5f (t/L x share %.5f)\n",
+                  percent, u, inner, outer, lhs, want);
+      EXPECT_GT(std::abs(inner), std::abs(outer));
+      EXPECT_NEAR(lhs, want, 0.01 * want) << "u = " << u;
+      // the mean steer stays close to the old table's (the arm's asin)
+      const double old = old_tables.pose(0, 0.0, u).gamma_rad.value;
+      EXPECT_NEAR(0.5 * (left + right), old, 0.05 * std::abs(old));
+    }
+  }
+  // 0 %: the old tables, bit for bit
+  VehicleParams zero = base;
+  zero.axles[0].kinematics.ackermann_percent = 0;
+  const SuspensionKinematics k0(zero);
+  for (double u : {0.01, 0.04, -0.07}) {
+    for (int w = 0; w < 2; ++w) {
+      EXPECT_EQ(k0.pose(w, 0.02, u).gamma_rad.value, old_tables.pose(w, 0.02, u).gamma_rad.value);
+      EXPECT_EQ(k0.pose(w, 0.02, u).gamma_rad.d_du, old_tables.pose(w, 0.02, u).gamma_rad.d_du);
+    }
+  }
 }
 
 }  // namespace
