@@ -101,7 +101,7 @@ struct SteeringParams {
   double tie_rod_damping_nspm = 3000;
   /// Enhanced model: knuckle + wheel inertia about the steering axis, per wheel [kg m^2].
   double knuckle_inertia_kgm2 = 1.0;
-  double assist_gain = 4.0;              ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
+  double assist_gain = 4.0;  ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
   double assist_max_nm = 12.0;
   /// The overriding gear's fastest overlay at the pinion (its motor's speed limit). A step
   /// command is followed at this rate: taken in one step it would jolt the rack (h omega > 2

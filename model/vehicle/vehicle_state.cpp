@@ -52,8 +52,8 @@ bool is_finite(const VehicleState& s) noexcept {
             s.acceleration_mps2.allFinite();
   for (std::size_t k = 0; k < s.spin_radps.size(); ++k) {
     ok = ok && std::isfinite(s.spin_radps[k]) && s.tire_deflection_m[k].allFinite() &&
-         std::isfinite(s.rack_at_wheel_m[k]) &&
-         std::isfinite(s.knuckle_rate_mps[k]) && std::isfinite(s.lateral_force_n[k]);
+         std::isfinite(s.rack_at_wheel_m[k]) && std::isfinite(s.knuckle_rate_mps[k]) &&
+         std::isfinite(s.lateral_force_n[k]);
   }
   return ok;
 }

@@ -18,7 +18,7 @@ WheelSpinStage::WheelSpinStage(const VehicleParams& p, VehicleState& state,
 }
 
 double wheel_steering_axis_moment_nm(const VehicleParams& p, const VehicleState& state,
-                                      const WheelWork& w, int wheel) noexcept {
+                                     const WheelWork& w, int wheel) noexcept {
   const auto k = static_cast<std::size_t>(wheel);
   const AxleParams& axle = p.axles[k / 2];
   // aligning torque M_z = -(n(s_y) + caster trail) F_y: TMeasy's pneumatic trail n falls with

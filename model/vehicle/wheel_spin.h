@@ -20,8 +20,9 @@ namespace rig::model::vehicle {
 /// its tire's loads: the lateral force of the last step, the load and the aligning torque of the
 /// contact. Both steering models take it: the simple one through the tie rods at the rack, the
 /// enhanced one on the knuckle (EnhancedSteering).
-[[nodiscard]] double wheel_steering_axis_moment_nm(const VehicleParams& p, const VehicleState& state,
-                                                   const WheelWork& w, int wheel) noexcept;
+[[nodiscard]] double wheel_steering_axis_moment_nm(const VehicleParams& p,
+                                                   const VehicleState& state, const WheelWork& w,
+                                                   int wheel) noexcept;
 
 class WheelSpinStage final : public solver::Stage {
  public:

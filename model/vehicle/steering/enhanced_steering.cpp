@@ -41,8 +41,7 @@ void EnhancedSteering::scatter() noexcept {
 
 double EnhancedSteering::tie_rod_force_n(const Vector& y, const Vector& z, int j) const noexcept {
   const SteeringParams& s = p_.steering;
-  return s.tie_rod_stiffness_npm * (y(1) - y(2 + j)) +
-         s.tie_rod_damping_nspm * (z(1) - z(2 + j));
+  return s.tie_rod_stiffness_npm * (y(1) - y(2 + j)) + s.tie_rod_damping_nspm * (z(1) - z(2 + j));
 }
 
 void EnhancedSteering::mass_matrix(const Vector& y, Matrix& m) const noexcept {
@@ -52,14 +51,13 @@ void EnhancedSteering::mass_matrix(const Vector& y, Matrix& m) const noexcept {
   m.topLeftCorner<2, 2>() = m2;
   for (int j = 0; j < knuckles_; ++j) {
     // Theta gamma'^2 / 2 = Theta (dgamma/du)^2 u_k'^2 / 2, dgamma/du frozen at the step's pose
-    const double g = work_.wheels[static_cast<std::size_t>(wheel_[static_cast<std::size_t>(j)])]
-                         .steer_d_du;
+    const double g =
+        work_.wheels[static_cast<std::size_t>(wheel_[static_cast<std::size_t>(j)])].steer_d_du;
     m(2 + j, 2 + j) = p_.steering.knuckle_inertia_kgm2 * g * g;
   }
 }
 
-void EnhancedSteering::applied_forces(const Vector& y, const Vector& z,
-                                      Vector& q) const noexcept {
+void EnhancedSteering::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
   SteeringSystem::Vector q2;
   system_.applied_forces(y.head<2>(), z.head<2>(), q2);
   q(0) = q2(0);

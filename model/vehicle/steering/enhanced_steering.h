@@ -10,9 +10,9 @@
 /// (frozen at the step's pose) the knuckle's inertia Theta about the axis is the mass
 /// Theta (dgamma/du)^2 on u_k, and the axis moment M (steering_axis_moment_nm, from the
 /// wheel-spin stage's loads at the start of the step) the force M dgamma/du:
-///   tie rod:  F_k = c (u - u_k) + d (u' - u_k')                (pulls the rack, pushes the knuckle)
-///   rack:     q_u  = q_system,u - sum F_k
-///   knuckle:  Theta (dgamma/du)^2 u_k'' = M dgamma/du + F_k
+///   tie rod:  F_k = c (u - u_k) + d (u' - u_k')                (pulls the rack, pushes the
+///   knuckle) rack:     q_u  = q_system,u - sum F_k knuckle:  Theta (dgamma/du)^2 u_k'' = M
+///   dgamma/du + F_k
 /// At a static hold F_k = -M dgamma/du: the simple model's quasi-static tie-rod force.
 
 #include <array>
@@ -49,9 +49,7 @@ class EnhancedSteering final : public solver::MechanicalBlock<Eigen::Dynamic> {
   void scatter() noexcept;
   [[nodiscard]] int knuckle_count() const noexcept { return knuckles_; }
   /// The wheel index of knuckle j.
-  [[nodiscard]] int wheel_of(int j) const noexcept {
-    return wheel_[static_cast<std::size_t>(j)];
-  }
+  [[nodiscard]] int wheel_of(int j) const noexcept { return wheel_[static_cast<std::size_t>(j)]; }
   /// F_k = c (u - u_k) + d (u' - u_k') of knuckle j at (y, z) [N].
   [[nodiscard]] double tie_rod_force_n(const Vector& y, const Vector& z, int j) const noexcept;
 

@@ -13,9 +13,9 @@ namespace {
 using rig::model::Signal;
 using rig::model::Signals;
 
-void step_bench(benchmark::State& state, const char* file,
-                rig::model::vehicle::SteeringModel steering =
-                    rig::model::vehicle::SteeringModel::kSimple) {
+void step_bench(
+    benchmark::State& state, const char* file,
+    rig::model::vehicle::SteeringModel steering = rig::model::vehicle::SteeringModel::kSimple) {
   rig::model::vehicle::VehicleParams p = rig::io::config::load_vehicle_file(file);
   if (steering != rig::model::vehicle::SteeringModel::kSimple) p.steering.model = steering;
   rig::model::vehicle::VehicleModel m(p, 1e-3);

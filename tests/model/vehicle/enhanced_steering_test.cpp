@@ -46,7 +46,8 @@ History step_steer(const VehicleParams& p, double h, double sw_rad, double durat
   for (long k = 0; k < n; ++k) {
     const double t = m.time_s();
     s[Signal::kSteeringWheelAngleCmd] = sw_rad * std::clamp((t - 1.0) / 0.1, 0.0, 1.0);
-    s[Signal::kThrottlePedal] = std::clamp(0.2 + 0.5 * (v_mps - s[Signal::kVehicleSpeed]), 0.0, 1.0);
+    s[Signal::kThrottlePedal] =
+        std::clamp(0.2 + 0.5 * (v_mps - s[Signal::kVehicleSpeed]), 0.0, 1.0);
     if (m.step(s) != StepStatus::kOk || !std::isfinite(s[Signal::kYawRate])) {
       out.finite = false;
       return out;
@@ -93,8 +94,8 @@ TEST(EnhancedSteering, StepSteerConvergesUpToAtLeastTwoMilliseconds) {
     const double drack = r.finite ? relative_deviation(r.rack_m, ref.rack_m) : 1e9;
     const bool ok = r.finite && dyaw < 0.05 && drack < 0.05 &&
                     r.yaw_rate_radps.size() == ref.yaw_rate_radps.size();
-    std::printf("h %.1f ms: yaw rate deviation %.3f %%, rack %.3f %% of the peak -> %s\n",
-                h * 1e3, 100 * dyaw, 100 * drack, ok ? "within 5 %" : "OUT");
+    std::printf("h %.1f ms: yaw rate deviation %.3f %%, rack %.3f %% of the peak -> %s\n", h * 1e3,
+                100 * dyaw, 100 * drack, ok ? "within 5 %" : "OUT");
     if (ok) largest_ok = h;
     if (h == 1e-3) {
       EXPECT_TRUE(ok) << "h = 1 ms";
@@ -122,11 +123,12 @@ TEST(EnhancedSteering, AgreesWithTheSimpleModelAtStiffTieRods) {
   const double e_peak = peak_abs(e.yaw_rate_radps), s_peak = peak_abs(s.yaw_rate_radps);
   const double e_final = e.yaw_rate_radps.back(), s_final = s.yaw_rate_radps.back();
   const double e_rack = e.rack_m.back(), s_rack = s.rack_m.back();
-  std::printf("step steer: yaw rate peak %.5f / %.5f rad/s, final %.5f / %.5f rad/s, rack %.6f / "
-              "%.6f m (enhanced / simple), history deviation yaw %.2f %%, rack %.2f %%\n",
-              e_peak, s_peak, e_final, s_final, e_rack, s_rack,
-              100 * relative_deviation(e.yaw_rate_radps, s.yaw_rate_radps),
-              100 * relative_deviation(e.rack_m, s.rack_m));
+  std::printf(
+      "step steer: yaw rate peak %.5f / %.5f rad/s, final %.5f / %.5f rad/s, rack %.6f / "
+      "%.6f m (enhanced / simple), history deviation yaw %.2f %%, rack %.2f %%\n",
+      e_peak, s_peak, e_final, s_final, e_rack, s_rack,
+      100 * relative_deviation(e.yaw_rate_radps, s.yaw_rate_radps),
+      100 * relative_deviation(e.rack_m, s.rack_m));
   EXPECT_NEAR(e_peak, s_peak, 0.05 * s_peak);
   EXPECT_NEAR(e_final, s_final, 0.05 * std::abs(s_final));
   EXPECT_NEAR(e_rack, s_rack, 0.05 * std::abs(s_rack));
@@ -152,8 +154,8 @@ TEST(EnhancedSteering, AgreesWithTheSimpleModelAtStiffTieRods) {
   double e_steer = 0, e_ay = 0, s_steer = 0, s_ay = 0;
   circle(SteeringModel::kEnhanced, e_steer, e_ay);
   circle(SteeringModel::kSimple, s_steer, s_ay);
-  std::printf("circle: steer %.5f / %.5f rad, a_y %.4f / %.4f m/s^2 (enhanced / simple)\n",
-              e_steer, s_steer, e_ay, s_ay);
+  std::printf("circle: steer %.5f / %.5f rad, a_y %.4f / %.4f m/s^2 (enhanced / simple)\n", e_steer,
+              s_steer, e_ay, s_ay);
   EXPECT_NEAR(e_steer, s_steer, 0.05 * std::abs(s_steer));
   EXPECT_NEAR(e_ay, s_ay, 0.05 * std::abs(s_ay));
 }
@@ -171,7 +173,8 @@ TEST(EnhancedSteering, StaticTieRodForceIsTheAxisMomentOverTheLever) {
   sig[Signal::kGearRequest] = 1;
   for (int k = 0; k < 12000; ++k) {
     sig[Signal::kSteeringWheelAngleCmd] = 1.1;
-    sig[Signal::kThrottlePedal] = std::clamp(0.1 + 0.8 * (v - sig[Signal::kVehicleSpeed]), 0.0, 1.0);
+    sig[Signal::kThrottlePedal] =
+        std::clamp(0.1 + 0.8 * (v - sig[Signal::kVehicleSpeed]), 0.0, 1.0);
     ASSERT_EQ(m.step(sig), StepStatus::kOk);
   }
   const AxleParams& front = p.axles[0];
@@ -254,7 +257,6 @@ TEST(EnhancedSteering, AnalyticJacobiansAndNoAllocationPerStep) {
   EXPECT_DOUBLE_EQ(ay(2, 1), p.steering.tie_rod_stiffness_npm);
 }
 
-
 // Ackermann (issue 15, item 2): each steered wheel its own eq. (29) steer table. At 100 % the
 // inner and outer steer satisfy cot(outer) - cot(inner) = track / wheelbase (both axes meet on
 // the rear axle's line), at 50 % half of it; 0 % gives the old mirrored tables exactly.
@@ -274,9 +276,10 @@ TEST(Ackermann, InnerAndOuterSteerMeetOnTheRearAxleLine) {
       const double inner = u > 0 ? left : right, outer = u > 0 ? right : left;
       const double lhs = 1 / std::tan(std::abs(outer)) - 1 / std::tan(std::abs(inner));
       const double want = 0.01 * percent * track / wheelbase;
-      std::printf("ackermann %.0f %%, u %+.4f m: inner %.4f rad, outer %.4f rad, cot(o) - cot(i) "
-                  "%.5f (t/L x share %.5f)\n",
-                  percent, u, inner, outer, lhs, want);
+      std::printf(
+          "ackermann %.0f %%, u %+.4f m: inner %.4f rad, outer %.4f rad, cot(o) - cot(i) "
+          "%.5f (t/L x share %.5f)\n",
+          percent, u, inner, outer, lhs, want);
       EXPECT_GT(std::abs(inner), std::abs(outer));
       EXPECT_NEAR(lhs, want, 0.01 * want) << "u = " << u;
       // the mean steer stays close to the old table's (the arm's asin)
