@@ -5,7 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -255,6 +261,45 @@ TEST(EnhancedSteering, AnalyticJacobiansAndNoAllocationPerStep) {
   EXPECT_LT((ay - fy).norm(), 1e-4 * fy.norm()) << ay << "\n" << fy;
   EXPECT_LT((az - fz).norm(), 1e-3 * fz.norm()) << az << "\n" << fz;
   EXPECT_DOUBLE_EQ(ay(2, 1), p.steering.tie_rod_stiffness_npm);
+}
+
+/// The sedan file with `from` replaced by `to` (in a temporary file of this process).
+std::filesystem::path sedan_with(const std::string& from, const std::string& to) {
+  std::ifstream in(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  const auto file = std::filesystem::temp_directory_path() /
+                    ("rig_enhanced_test_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(file) << text;
+  return file;
+}
+
+TEST(EnhancedSteering, VehicleFileKeys) {
+  const auto file = sedan_with("input = \"angle\"",
+                               "model = \"enhanced\"\ntie_rod_damping_nspm = 1234.0\n"
+                               "knuckle_inertia_kgm2 = 0.8\ninput = \"angle\"");
+  const VehicleParams p = io::config::load_vehicle_file(file);
+  EXPECT_EQ(p.steering.model, SteeringModel::kEnhanced);
+  EXPECT_DOUBLE_EQ(p.steering.tie_rod_damping_nspm, 1234.0);
+  EXPECT_DOUBLE_EQ(p.steering.knuckle_inertia_kgm2, 0.8);
+  EXPECT_EQ(io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml")
+                .axles[0]
+                .kinematics.ackermann_percent,
+            0.0);
+  const auto bad =
+      sedan_with("input = \"angle\"", "knuckle_inertia_kgm2 = -1.0\ninput = \"angle\"");
+  try {
+    (void)io::config::load_vehicle_file(bad);
+    ADD_FAILURE() << "no error";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("knuckle_inertia_kgm2"), std::string::npos) << e.what();
+  }
+  const auto ack = sedan_with("interpolation = \"bicubic\"\n",
+                              "interpolation = \"bicubic\"\nackermann_percent = 100.0\n");
+  EXPECT_DOUBLE_EQ(io::config::load_vehicle_file(ack).axles[0].kinematics.ackermann_percent, 100.0);
+  std::filesystem::remove(file);
 }
 
 // Ackermann (issue 15, item 2): each steered wheel its own eq. (29) steer table. At 100 % the
