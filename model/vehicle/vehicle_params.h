@@ -37,6 +37,10 @@ struct AxleKinematicsParams {
   double camber_per_travel_radpm = 0;  ///< dalpha/dz [rad/m]
   double toe_rad = 0;                  ///< static gamma of the left wheel (+: front to the left)
   double bump_steer_radpm = 0;         ///< dgamma/dz [rad/m]
+  /// Generated steer tables: Ackermann share [%]. 100: the inner wheel steers more so that both
+  /// wheels' axes meet on the line of the unsteered axles (cot(outer) - cot(inner) = track /
+  /// wheelbase); 0: both wheels asin(u / arm), the right the mirror of the left.
+  double ackermann_percent = 0;
   /// Given tables of the left wheel, z-major (values[k * u_count + l]); empty: generated.
   kinematics::Grid2D grid{};
   std::vector<double> x_m, y_m, alpha_rad, beta_rad, gamma_rad;
@@ -93,7 +97,11 @@ struct SteeringParams {
   double rack_friction_speed_mps = 0.002;
   double steering_arm_m = 0.13;          ///< wheel steer = rack travel / arm (small angles)
   double tie_rod_stiffness_npm = 1.5e6;  ///< per side, as seen at the rack
-  double assist_gain = 4.0;              ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
+  /// Enhanced model: the tie rod's damping, rack to knuckle, per side [N s/m].
+  double tie_rod_damping_nspm = 3000;
+  /// Enhanced model: knuckle + wheel inertia about the steering axis, per wheel [kg m^2].
+  double knuckle_inertia_kgm2 = 1.0;
+  double assist_gain = 4.0;  ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
   double assist_max_nm = 12.0;
   /// The overriding gear's fastest overlay at the pinion (its motor's speed limit). A step
   /// command is followed at this rate: taken in one step it would jolt the rack (h omega > 2

@@ -52,7 +52,10 @@ struct VehicleState {
   double rack_servo_integral_n = 0;
   // ---- quasi-static memory of the last step ----
   /// Rack travel at the wheel after the tie-rod compliance: where eq. (29) is evaluated next.
+  /// (Enhanced steering: the knuckle's coordinate, its steer as rack-equivalent travel.)
   std::array<double, kMaxWheels> rack_at_wheel_m{};
+  /// Enhanced steering: each knuckle's speed d(rack_at_wheel_m)/dt (0 with the simple model).
+  std::array<double, kMaxWheels> knuckle_rate_mps{};
   /// Tire lateral force: its aligning torque loads the rack in the next step.
   std::array<double, kMaxWheels> lateral_force_n{};
   /// CG acceleration over the last step, body axes (from z(k+1) - z(k)).
