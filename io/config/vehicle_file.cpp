@@ -180,9 +180,10 @@ std::optional<double> read_steering(StrictTable t, model::vehicle::SteeringParam
   s.system = system == "column"          ? SteeringSystemKind::kColumn
              : system == "steer_by_wire" ? SteeringSystemKind::kSteerByWire
                                          : SteeringSystemKind::kRackInTheLoop;
-  // issue 15 builds these; until then a clear refusal rather than a silent simple model
+  // issue 15 builds these (rack_in_the_loop: RackInTheLoop); until then a clear refusal rather
+  // than a silent simple model
   if (s.model != SteeringModel::kSimple) throw t.error("model", "\"enhanced\" is not built yet");
-  if (s.system != SteeringSystemKind::kColumn)
+  if (s.system == SteeringSystemKind::kSteerByWire)
     throw t.error("system", "\"" + system + "\" is not built yet");
   s.torque_input = t.choice("input", "angle", {"angle", "torque"}) == "torque";
   s.wheel_inertia_kgm2 = t.number_in("wheel_inertia_kgm2", 1e-3, 10);

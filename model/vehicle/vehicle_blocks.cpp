@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "model/tire/vertical_tire_force.h"
+#include "model/vehicle/steering/rack_in_the_loop.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -19,6 +20,15 @@ std::unique_ptr<HalfShafts> make_shafts(const VehicleParams& p, VehicleState& st
   const DrivenWheels driven = driven_wheels(p);
   if (driven.count == 0) return nullptr;
   return std::make_unique<HalfShafts>(p.drivetrain, state, work, driven.wheel, driven.count);
+}
+
+/// The steering system [steering] system names (the simple model's SimpleSteering block loads
+/// it at the rack with the tie rods' force).
+std::unique_ptr<SteeringSystem> make_steering_system(const SteeringParams& p, VehicleState& state,
+                                                     const VehicleInputs& inputs) {
+  if (p.system == SteeringSystemKind::kRackInTheLoop)
+    return std::make_unique<RackInTheLoop>(p, state, inputs);
+  return std::make_unique<ColumnSteering>(p, state, inputs);
 }
 
 }  // namespace
@@ -42,7 +52,7 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
       framework_(p, state, work),
       shafts_(make_shafts(p, state, work)),
       drivetrain_(p.drivetrain, state, inputs, work, shafts_.get()),
-      steering_system_(std::make_unique<ColumnSteering>(p.steering, state, inputs)),
+      steering_system_(make_steering_system(p.steering, state, inputs)),
       steering_(*steering_system_, state, work),
       wheel_stage_(p, state, inputs, work, shafts_.get(), drivetrain_),
       drivetrain_stepper_(drivetrain_),
