@@ -56,8 +56,10 @@ class CycleIo {
   /// most `period_ns` (received and sent) are its cycle frames. Default: none.
   virtual void set_cycle_frames(std::int64_t period_ns) noexcept { (void)period_ns; }
   /// Lock-step: blocks (the only blocking call, and only with --lockstep) until a received cycle
-  /// frame is pending or was taken in since the last receive(), at most `timeout_ns`.
-  virtual CycleFrameWait wait_cycle_frame(std::int64_t timeout_ns) noexcept {
+  /// frame is pending or was taken in since the last receive(), at most `timeout_ns` of real
+  /// time; frames taken in are stamped `loop_ns` (the loop's time of the cycle).
+  virtual CycleFrameWait wait_cycle_frame(std::int64_t loop_ns, std::int64_t timeout_ns) noexcept {
+    (void)loop_ns;
     (void)timeout_ns;
     return CycleFrameWait::kNoCycleFrames;
   }

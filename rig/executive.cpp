@@ -161,10 +161,15 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
   t.deadline_ns = loop.deadline_ns;
   t.wake_ns = clock_.now_ns();
   t.lateness_ns = t.wake_ns - t.deadline_ns;
-  if (params_.lockstep) wait_lockstep(loop, t);
+  // lock-step: the adapters run on the loop's grid (their timeouts and send grids count
+  // simulated periods, as the model does), whatever the waits took
+  const std::int64_t io_ns =
+      params_.lockstep ? start_ns_ + static_cast<std::int64_t>(loop.cycle + 1) * period_ns_
+                       : t.wake_ns;
+  if (params_.lockstep) wait_lockstep(loop, t, io_ns);
   PhaseTimer phases(clock_, t);
 
-  for (io::CycleIo* a : io_) a->receive(t.wake_ns, signals_);
+  for (io::CycleIo* a : io_) a->receive(io_ns, signals_);
   log_io_events(t.wake_ns);
   phases.end(io::Phase::kInputs);
   if (driver_ != nullptr) driver_->update(model_.time_s(), signals_);
@@ -174,7 +179,7 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
   fill_report();
   const std::int64_t model_end_ns = phases.end(io::Phase::kModel);
   const io::signals::CycleView view{signals_, report_};
-  for (io::CycleIo* a : io_) a->transmit(model_end_ns, view);
+  for (io::CycleIo* a : io_) a->transmit(params_.lockstep ? io_ns : model_end_ns, view);
   note_cycle_frames(loop.cycle, model_end_ns);
   phases.end(io::Phase::kOutputs);
   t.sim_time_s = model_.time_s();
@@ -195,10 +200,10 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
 /// Lock-step: waits for a received cycle frame (the adapters that have cycle frames). The wait
 /// is the bench's time, not the loop's: the cycle's deadline moves to its end, so neither the
 /// lateness nor the overrun policy sees it (the summary's "cycle_frames" does).
-void Executive::wait_lockstep(LoopState& loop, io::CycleTiming& t) noexcept {
+void Executive::wait_lockstep(LoopState& loop, io::CycleTiming& t, std::int64_t io_ns) noexcept {
   bool waited = false, timed_out = false;
   for (io::CycleIo* a : io_) {
-    const io::CycleFrameWait w = a->wait_cycle_frame(params_.lockstep_timeout_ns);
+    const io::CycleFrameWait w = a->wait_cycle_frame(io_ns, params_.lockstep_timeout_ns);
     waited = waited || w != io::CycleFrameWait::kNoCycleFrames;
     timed_out = timed_out || w == io::CycleFrameWait::kTimeout;
   }

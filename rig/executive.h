@@ -48,7 +48,8 @@ struct ExecutiveParams {
   /// rig run --lockstep (docs/can.md "Lock-step"): each cycle waits, at most lockstep_timeout_ns,
   /// for a received cycle frame (CycleIo::wait_cycle_frame) before its inputs; the wait is not
   /// lateness (the cycle's deadline moves to its end), a timeout is counted, logged, and the
-  /// cycle runs on the held inputs.
+  /// cycle runs on the held inputs. The adapters then run on the loop's grid (start + (cycle +
+  /// 1) period): their timeouts and send grids count simulated periods.
   bool lockstep = false;
   std::int64_t lockstep_timeout_ns = 100'000'000;
 };
@@ -168,7 +169,7 @@ class Executive {
   model::StepStatus step_model() noexcept;
   void fill_report() noexcept;
   void log_io_events(std::int64_t now_ns) noexcept;
-  void wait_lockstep(LoopState& loop, io::CycleTiming& t) noexcept;
+  void wait_lockstep(LoopState& loop, io::CycleTiming& t, std::int64_t io_ns) noexcept;
   [[nodiscard]] std::int64_t elapsed_ns(const LoopState& loop) const noexcept;
   void note_cycle_frames(std::uint64_t cycle, std::int64_t now_ns) noexcept;
   StopReason after_fault(model::StepStatus status, const io::CycleTiming& t,

@@ -22,7 +22,7 @@ class RackBench final : public io::CycleIo {
   RackBench(test::FakeClock& clock, std::int64_t answer_ns)
       : clock_(clock), answer_ns_(answer_ns) {}
   void set_cycle_frames(std::int64_t period_ns) noexcept override { period_ns_ = period_ns; }
-  io::CycleFrameWait wait_cycle_frame(std::int64_t timeout_ns) noexcept override {
+  io::CycleFrameWait wait_cycle_frame(std::int64_t, std::int64_t timeout_ns) noexcept override {
     if (lost.count(cycle_) != 0) {
       clock_.advance(timeout_ns);
       return io::CycleFrameWait::kTimeout;

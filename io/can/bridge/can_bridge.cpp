@@ -153,14 +153,15 @@ void CanBridge::drain(std::int64_t monotonic_ns) noexcept {
   });
 }
 
-io::CycleFrameWait CanBridge::wait_cycle_frame(std::int64_t timeout_ns) noexcept {
+io::CycleFrameWait CanBridge::wait_cycle_frame(std::int64_t loop_ns,
+                                               std::int64_t timeout_ns) noexcept {
   if (cycle_rx_count_ == 0) return io::CycleFrameWait::kNoCycleFrames;
+  if (!started_) start(loop_ns);
   const std::int64_t start_ns = monotonic_now_ns();
-  if (!started_) start(start_ns);
   for (;;) {
     const std::int64_t now_ns = monotonic_now_ns();
-    transport_.service(now_ns);
-    drain(now_ns);
+    transport_.service(loop_ns);
+    drain(loop_ns);
     if (cycle_rx_pending_) return io::CycleFrameWait::kReceived;
     const std::int64_t left_ns = start_ns + timeout_ns - now_ns;
     if (left_ns <= 0) return io::CycleFrameWait::kTimeout;

@@ -43,7 +43,8 @@ class CanBridge final : public io::CycleIo {
   void read_counters(IoCounters& counters) const noexcept override;
   bool next_event(io::IoEvent& event) noexcept override;
   void set_cycle_frames(std::int64_t period_ns) noexcept override;
-  io::CycleFrameWait wait_cycle_frame(std::int64_t timeout_ns) noexcept override;
+  io::CycleFrameWait wait_cycle_frame(std::int64_t loop_ns,
+                                      std::int64_t timeout_ns) noexcept override;
   [[nodiscard]] bool cycle_frame_received() const noexcept override { return cycle_rx_; }
   [[nodiscard]] bool cycle_frame_sent() const noexcept override { return cycle_tx_; }
   [[nodiscard]] std::uint64_t events_dropped() const noexcept { return events_dropped_; }
