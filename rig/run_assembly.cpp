@@ -93,6 +93,7 @@ ExecutiveParams executive_params(const RigConfig& config, const RunOptions& opti
   p.cpu = options.cpu ? *options.cpu : config.rig.cpu;
   p.stall_cycle = options.stall_cycle;
   p.stall_ms = options.stall_ms;
+  p.lockstep = options.lockstep;
   p.hold_on_vehicle_fault = config.rig.hold_on_vehicle_fault;
   if (config.model.vehicle) p.unit_files.push_back(config.model.vehicle->file.string());
   if (config.model.combination) {

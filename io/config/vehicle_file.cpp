@@ -185,9 +185,6 @@ std::optional<double> read_steering(StrictTable t, model::vehicle::SteeringParam
   s.system = system == "column"          ? SteeringSystemKind::kColumn
              : system == "steer_by_wire" ? SteeringSystemKind::kSteerByWire
                                          : SteeringSystemKind::kRackInTheLoop;
-  // issue 15 builds these; until then a clear refusal rather than a silent simple model
-  if (s.system == SteeringSystemKind::kRackInTheLoop)
-    throw t.error("system", "\"" + system + "\" is not built yet");
   s.torque_input = t.choice("input", "angle", {"angle", "torque"}) == "torque";
   s.wheel_inertia_kgm2 = t.number_in("wheel_inertia_kgm2", 1e-3, 10);
   s.column_damping_nmspr = t.number_in("column_damping_nmspr", 0, 100);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "model/tire/vertical_tire_force.h"
+#include "model/vehicle/steering/rack_in_the_loop.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -33,12 +34,14 @@ DrivenWheels driven_wheels(const VehicleParams& p) noexcept {
 }
 
 namespace {
-/// What moves the rack, as [steering] system says (rack-in-the-loop: the bench helper's).
+/// What moves the rack, as [steering] system says.
 std::unique_ptr<SteeringSystem> make_steering_system(const SteeringParams& p, VehicleState& state,
                                                      const VehicleInputs& inputs,
                                                      const VehicleWorkspace& work) {
   if (p.system == SteeringSystemKind::kSteerByWire)
     return std::make_unique<SteerByWire>(p, state, inputs, work);
+  if (p.system == SteeringSystemKind::kRackInTheLoop)
+    return std::make_unique<RackInTheLoop>(p, state, inputs);
   return std::make_unique<ColumnSteering>(p, state, inputs);
 }
 }  // namespace
