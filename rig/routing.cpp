@@ -53,7 +53,8 @@ Routing resolve_routing(const RoutingRequests& requests, const io::InputSet& dri
       r.driver_inputs.set(i);
     }
   }
-  r.assist_from_input = r.can_inputs[model::index(model::Signal::kAssistTorque)];
+  const std::size_t assist = model::index(model::Signal::kAssistTorque);
+  r.assist_from_input = r.can_inputs[assist] || driver_writes[assist];
   return r;
 }
 
