@@ -308,7 +308,7 @@ def parking_peak(s, rows, name):
 def case_parking_effort(s, rows):
     check(max(speed(r) for r in rows) < 0.05, "stand-still throughout")
     peak = parking_peak(s, rows, "stand-still")
-    fz = [at(rows, 1.0)["wheel0_fz_n"], at(rows, 1.0)["wheel1_fz_n"]]
+    fz = [at(rows, 1.0)["wheel0_tire_load_n"], at(rows, 1.0)["wheel1_tire_load_n"]]
     expected, missing = parking_hand_estimate(config_path(NAME), fz)
     if expected is None:
         print(f"NOT CHECKED (the model has no bore torque yet): {missing}")
