@@ -260,33 +260,51 @@ def case_weave_iso13674(s, rows):
         check(k[name]["value"] is not None and math.isfinite(k[name]["value"]), f"kpi {name} reported")
 
 
+def bore_params(tire):
+    """The tire's bore-torque table, None without one. ASSUMED key layout (the axis branch had
+    not wired its keys yet): `bore = { stiffness_nmprad, damping_nmsprad, contact_width_m }` in
+    [tires.X], or `bore_torque = true` with `contact_width_m` beside it; the lead aligns it."""
+    b = tire.get("bore")
+    if isinstance(b, dict):
+        return b if b.get("enabled", True) else None
+    if tire.get("bore_torque"):
+        return {"contact_width_m": tire.get("contact_width_m", 0.2)}
+    return None
+
+
 def parking_hand_estimate(config, fz_front_n):
-    """Peak rack force at stand-still, assist off, from the vehicle file: both front tires'
-    bore-torque maximum M_B,max = (2/3) R_P mu F_z through the steering arm, plus the jacking
-    torque of the kingpin geometry at lock. None (with the missing key) until the model has bore
-    torque (the axis branch: tire keys `bore_*`, axle keys `kingpin_inclination_rad`,
-    `spindle_offset_m`/`scrub_radius_m`)."""
+    """Peak rack force at stand-still, assist off, from the vehicle and maneuver files: both
+    front tires' bore-torque maximum M_B,max = (2/3) R_P mu F_z (sliding at lock), R_P =
+    (L/2 + B/2)/2, L = sqrt(8 r_0 F_z / c_z) (model/tire/tmeasy_bore.h), plus the jacking torque
+    of the kingpin inclination ~ F_z (r_s + R tan KPI) sin(KPI) psi (steering_axis.h, small
+    angles; the caster's terms cancel between equal loads), through the steering linkage at lock:
+    the steer is asin(u / arm), so F_rack = M dgamma/du = M / (arm cos gamma). Returns (None,
+    why) while the vehicle has no bore torque."""
+    import tomllib
     veh = vehicle_file(config)
+    mu = tomllib.load(open(config, "rb"))["model"].get("road_friction", 1.0)
     front = next(a for a in veh["axle"] if a.get("steered"))
     tire = veh["tires"][front["tire"]]
-    if "contact_width_m" not in tire:
-        return None, "tire key contact_width_m (bore torque) not in the vehicle file"
+    bore = bore_params(tire)
+    if bore is None:
+        return None, f"[tires.{front['tire']}] has no bore torque (bore = {{...}} / bore_torque)"
     r0, cz = tire["radius_unloaded_m"], tire["vertical_stiffness_npm"]
     st = veh["steering"]
     arm = st["steering_arm_m"]
-    total = 0.0
+    u_lock = LOCK_RAD * st["rack_per_pinion_m_per_rad"]
+    psi = math.asin(u_lock / arm)
+    kpi, r_s = front.get("kingpin_inclination_rad", 0.0), front.get("scrub_radius_m", 0.0)
+    total_nm = 0.0
     for fz in fz_front_n:
-        length = 2.0 * math.sqrt(r0 * fz / cz)  # contact length of the deflected tire
-        r_p = 0.25 * (length + tire["contact_width_m"])  # R_P = (L/2 + B/2) / 2
-        mu = tire["lateral_nominal"]["max_force_n"] / tire["nominal_load_n"]
+        length = math.sqrt(8.0 * r0 * fz / cz)
+        r_p = 0.5 * (0.5 * length + 0.5 * bore["contact_width_m"])
         m_bore = 2.0 / 3.0 * r_p * mu * fz
-        # jacking: the wheel centre swings about the inclined axis, lifting the car
-        sigma = front.get("kingpin_inclination_rad", 0.0)
-        d = (front.get("scrub_radius_m", 0.0) + r0 * math.tan(sigma)) * math.cos(sigma)
-        delta_lock = math.asin(min(1.0, LOCK_RAD * st["rack_per_pinion_m_per_rad"] / arm))
-        m_jack = fz * d * math.sin(sigma) * math.sin(delta_lock)
-        total += (m_bore + m_jack) / arm
-    return total, ""
+        m_jack = fz * (r_s + r0 * math.tan(kpi)) * math.sin(kpi) * psi
+        total_nm += m_bore + m_jack
+        print(f"hand estimate, one wheel: F_z {fz:.0f} N, L {length * 1e3:.1f} mm, R_P "
+              f"{r_p * 1e3:.1f} mm, M_B,max {m_bore:.1f} N m, jacking at {math.degrees(psi):.1f} deg "
+              f"{m_jack:.1f} N m")
+    return total_nm / (arm * math.cos(psi)), ""
 
 
 LOCK_RAD = 9.42  # the maneuver's lock (1.5 turns)
@@ -321,12 +339,29 @@ def case_parking_effort_5kmh(s, rows):
     v = [speed(r) for r in rows if r["sim_time_s"] >= 1.0]
     check(min(v) > 3 / 3.6 and max(v) < 7 / 3.6, f"speed {min(v) * 3.6:.1f}-{max(v) * 3.6:.1f} km/h")
     peak = parking_peak(s, rows, "5 km/h")
-    if vehicle_file(config_path(NAME))["tires"]["p205"].get("contact_width_m") is None:
+    veh = vehicle_file(config_path(NAME))
+    front = next(a for a in veh["axle"] if a.get("steered"))
+    if bore_params(veh["tires"][front["tire"]]) is None:
         print("NOT CHECKED (the model has no bore torque yet): 5 km/h peak <= half the stand-still")
         return
     s0, rows0 = run_offline(config_path("parking-effort"))
     peak0 = kpis_of(s0)["peak_rack_force_n"]["value"]
     check(peak <= 0.5 * peak0, f"5 km/h peak {peak:.1f} N at most half the stand-still {peak0:.1f} N")
+
+
+def case_returnability(s, rows):
+    k = kpis_of(s)["returnability_residual"]
+    a0, a3 = at(rows, 4.0)["steering_wheel_angle_rad"], at(rows, 7.0)["steering_wheel_angle_rad"]
+    check(abs(a0 - math.pi / 2) < 0.05, f"the robot holds 90 deg until the release ({a0:.4f} rad)")
+    v = [speed(r) for r in rows if r["sim_time_s"] >= 1.0]
+    check(min(v) > 15 / 3.6 and max(v) < 25 / 3.6,
+          f"speed {min(v) * 3.6:.1f}-{max(v) * 3.6:.1f} km/h (20 +- 5)")
+    check(abs(k["value"] - abs(a3) / abs(a0)) < 1e-9, f"kpi {k['value']:.4f} = |{a3:.4f}| / |{a0:.4f}|")
+    for t in (4.0, 4.5, 5.0, 6.0, 7.0, 8.0):
+        r = at(rows, t)
+        print(f"t {t:.1f} s: wheel {r['steering_wheel_angle_rad']:.4f} rad, torsion bar "
+              f"{r['torsion_bar_torque_nm']:.3f} N m, rack force {r['rack_force_n']:.1f} N")
+    check(k["value"] < 0.1, f"residual angle 3 s after the release {100 * k['value']:.1f} % (< 10 %)")
 
 
 def check_joint(rows, units=2):
