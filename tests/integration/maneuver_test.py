@@ -17,6 +17,7 @@ import csv
 import json
 import math
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -417,4 +418,5 @@ case = globals().get("case_" + NAME.replace("-", "_"))  # combination-x-y: case_
 if case is None:
     fail(f"no physical check for {NAME}: add case_{NAME.replace('-', '_')} to {__file__}")
 case(summary, states)
+shutil.rmtree(TMP, ignore_errors=True)  # /tmp fills up; a failure keeps its log for a look
 print("PASS", NAME)
