@@ -174,6 +174,7 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
     j += "  \"vehicle_fault\": " + vehicle_fault_json(e.vehicle_fault(), e.fault_unit_file()) +
          ",\n";
   }
+  j += "  \"kpis\": " + kpi::kpis_json(x.kpis) + ",\n";
   j += "  \"write_failures\": " + write_failures_json(x.write_failures) + ",\n";
   j += "  \"stop_reason\": " + json_string(x.stop_reason) + ",\n";
   j += fmt("  \"exit_code\": %d\n}\n", x.exit_code);

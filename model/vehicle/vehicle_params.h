@@ -137,6 +137,11 @@ struct SteeringParams {
   /// true: the assist_torque_nm input (the ECU's motor torque) while it is valid, the boost
   /// curve while it is not; false: always the built-in boost curve.
   bool assist_from_input = false;
+  /// Angle mode: the steering_wheel_angle_cmd_rad input has a source (a routing decision, set
+  /// by the rig: the driver or CAN feeds it). Then the robot lets go of the wheel while that
+  /// input is not valid (a driver table's `nan` cell: returnability); without a source it holds
+  /// the wheel at 0, as always.
+  bool angle_from_input = false;
 };
 
 /// Engine, torque converter with lock-up, gearbox, open differentials (sec. 2.3).

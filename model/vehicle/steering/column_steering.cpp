@@ -51,7 +51,7 @@ double ColumnSteering::assist_torque_nm(const Vector& y, const Vector& z) const 
 void ColumnSteering::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
   const double tb = torsion_bar_torque_nm(y, z);
   double hand = inputs_.hand_torque_cmd_nm;
-  if (!p_.torque_input) {
+  if (!p_.torque_input && !inputs_.robot_released) {
     hand = p_.robot_stiffness_nmpr * (inputs_.steering_angle_cmd_rad - y(0)) -
            p_.robot_damping_nmspr * z(0);
   }
@@ -71,8 +71,9 @@ void ColumnSteering::force_jacobians(const Vector& y, const Vector& z, Matrix& d
     const double t = std::tanh(p_.assist_gain * torsion_bar_torque_nm(y, z) / p_.assist_max_nm);
     dassist = p_.assist_gain * (1 - t * t);
   }
-  const double robot_c = p_.torque_input ? 0.0 : p_.robot_stiffness_nmpr;
-  const double robot_d = p_.torque_input ? 0.0 : p_.robot_damping_nmspr;
+  const bool robot = !p_.torque_input && !inputs_.robot_released;
+  const double robot_c = robot ? p_.robot_stiffness_nmpr : 0.0;
+  const double robot_d = robot ? p_.robot_damping_nmspr : 0.0;
   const double th = std::tanh(z(1) / p_.rack_friction_speed_mps);
   const double dfric = p_.rack_friction_n * (1 - th * th) / p_.rack_friction_speed_mps;
   const double g = (1 + dassist) / i;
