@@ -48,6 +48,10 @@ struct VehicleState {
   std::array<double, kMaxWheels> rack_at_wheel_m{};
   /// Tire lateral force: its aligning torque loads the rack in the next step.
   std::array<double, kMaxWheels> lateral_force_n{};
+  /// Tire longitudinal force and half-shaft torque: their moments about the steering axis load
+  /// the rack in the next step (steering_axis.h).
+  std::array<double, kMaxWheels> long_force_n{};
+  std::array<double, kMaxWheels> shaft_torque_nm{};
   /// CG acceleration over the last step, body axes (from z(k+1) - z(k)).
   Vec3 acceleration_mps2 = Vec3::Zero();
 };

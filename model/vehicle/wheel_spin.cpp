@@ -34,6 +34,9 @@ void WheelSpinStage::tie_rods() noexcept {
     // loads the rack by virtual work, F_rack = -M_z dgamma/du (eq. 29)
     SteeringAxisLoads loads;
     loads.lat_force_n = state_.lateral_force_n[k];
+    loads.long_force_n = state_.long_force_n[k];
+    loads.shaft_torque_nm = state_.shaft_torque_nm[k];
+    loads.wheel_radius_m = w.tire.kinematics.rolling_radius_m;
     loads.load_n = w.load_n;
     loads.aligning_nm =
         tire::aligning_torque_nm(axle.tire.tmeasy, w.tire.kinematics, w.load_n, loads.lat_force_n);
