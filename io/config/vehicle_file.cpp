@@ -97,6 +97,13 @@ TireParams read_tire(StrictTable t) {
   p.low_speed_damping_ratio = t.number_in("low_speed_damping_ratio", 1.0, 0, 10);
   p.low_speed_damping_speed_mps = t.number_in("low_speed_damping_speed_mps", 1.0, 0.01, 10);
   read_trail(t, p.trail);
+  // the bore torque (model/tire/tmeasy_bore.h); its stiffness is needed once it is on
+  p.bore.enabled = t.boolean("bore_torque", false);
+  p.bore.stiffness_nmprad =
+      p.bore.enabled ? t.number_in("bore_stiffness_nmprad", 1, 1e7)
+                     : t.number_in("bore_stiffness_nmprad", 0, 0, 1e7);
+  p.bore.damping_nmsprad = t.number_in("bore_damping_nmsprad", 0, 0, 1e5);
+  p.bore.contact_width_m = t.number_in("contact_width_m", 0.2, 0.01, 2);
   t.finish();
   return tire;
 }

@@ -43,6 +43,7 @@ void place_at_rest(VehicleState& s, const VehicleParams& params, double x_m, dou
   s.lateral_force_n.fill(0);
   s.long_force_n.fill(0);
   s.shaft_torque_nm.fill(0);
+  s.bore_twist_rad.fill(0);
   s.acceleration_mps2.setZero();
 }
 
@@ -54,7 +55,8 @@ bool is_finite(const VehicleState& s) noexcept {
   for (std::size_t k = 0; k < s.spin_radps.size(); ++k) {
     ok = ok && std::isfinite(s.spin_radps[k]) && s.tire_deflection_m[k].allFinite() &&
          std::isfinite(s.rack_at_wheel_m[k]) && std::isfinite(s.lateral_force_n[k]) &&
-         std::isfinite(s.long_force_n[k]) && std::isfinite(s.shaft_torque_nm[k]);
+         std::isfinite(s.long_force_n[k]) && std::isfinite(s.shaft_torque_nm[k]) &&
+         std::isfinite(s.bore_twist_rad[k]);
   }
   return ok;
 }

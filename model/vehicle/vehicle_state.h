@@ -52,6 +52,8 @@ struct VehicleState {
   /// the rack in the next step (steering_axis.h).
   std::array<double, kMaxWheels> long_force_n{};
   std::array<double, kMaxWheels> shaft_torque_nm{};
+  /// The contact patch's torsional deflection phi of the bore torque (model/tire/tmeasy_bore.h).
+  std::array<double, kMaxWheels> bore_twist_rad{};
   /// CG acceleration over the last step, body axes (from z(k+1) - z(k)).
   Vec3 acceleration_mps2 = Vec3::Zero();
 };

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "model/tire/tmeasy_bore.h"
 #include "model/tire/tmeasy_tire.h"
 #include "model/vehicle/steering/steering_axis.h"
 
@@ -17,12 +18,13 @@ WheelSpinStage::WheelSpinStage(const VehicleParams& p, VehicleState& state,
   }
 }
 
-void WheelSpinStage::tie_rods() noexcept {
+void WheelSpinStage::tie_rods(double h) noexcept {
   // Tie-rod linkage (quasi-static compliance) from the new rack travel; the wheel's steer is
   // gamma(z, u) of the kinematic tables (SuspensionKinematics, eq. 29).
   const double rack = state_.steering_y(1);
   const SteeringParams& sp = p_.steering;
   double rack_force = 0;
+  double bore_stiffness = 0;
   int first_steered = -1;  // the first steered axle's left wheel (F_S1, F_S2 in the report)
   for (int i = 0; i < work_.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
@@ -40,6 +42,21 @@ void WheelSpinStage::tie_rods() noexcept {
     loads.load_n = w.load_n;
     loads.aligning_nm =
         tire::aligning_torque_nm(axle.tire.tmeasy, w.tire.kinematics, w.load_n, loads.lat_force_n);
+    if (axle.tire.tmeasy.bore.enabled) {
+      // the bore torque: the patch twists with the wheel's turn about the normal (steer rate
+      // from the new rack speed + yaw rate) and relaxes as it rolls (model/tire/tmeasy_bore.h)
+      const double turn_radps = w.steer_d_du * state_.steering_z(1) + state_.framework_z(5);
+      const tire::TireKinematics& kin = w.tire.kinematics;
+      const tire::BoreStep bore = tire::bore_step(
+          axle.tire.tmeasy, state_.bore_twist_rad[k], turn_radps,
+          kin.rolling_radius_m * std::abs(kin.spin_radps), w.load_n, w.road_friction, h);
+      state_.bore_twist_rad[k] = bore.twist_rad;
+      loads.bore_nm = bore.torque_nm;
+      // at the rack through dgamma/du, in series with the tie rod
+      const double at_rack = bore.stiffness_nmprad * w.steer_d_du * w.steer_d_du;
+      if (at_rack > 0) bore_stiffness += at_rack * sp.tie_rod_stiffness_npm /
+                                         (at_rack + sp.tie_rod_stiffness_npm);
+    }
     const int side = (k % 2 == 0) ? 1 : -1;
     const double axis_moment_nm = steering_axis_moment_nm(axle, loads, w.steer_kinematic_rad, side);
     w.tie_rod_force_n = -axis_moment_nm * w.steer_d_du;
@@ -52,6 +69,7 @@ void WheelSpinStage::tie_rods() noexcept {
     if (first_steered < 0) first_steered = i;
   }
   work_.rack_force_n = rack_force;
+  work_.rack_bore_stiffness_npm = bore_stiffness;
   if (first_steered >= 0) {
     work_.tie_rod_force_left_n =
         work_.wheels[static_cast<std::size_t>(first_steered)].tie_rod_force_n;
@@ -61,7 +79,7 @@ void WheelSpinStage::tie_rods() noexcept {
 }
 
 void WheelSpinStage::advance(double h) noexcept {
-  tie_rods();
+  tie_rods(h);
   work_.carrier_speed_radps = drivetrain_.carrier_speed_radps();  // newest (eq. 8 order)
   double shaft_torque = 0;
   if (shafts_ != nullptr)

@@ -29,6 +29,8 @@ class SimpleSteering final : public solver::MechanicalBlock<2> {
   bool force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
                        Matrix& dq_dz) const noexcept override {
     system_.force_jacobians(y, z, dq_dy, dq_dz);
+    // the lagged rack force's stiff part, the sticking bore torques (linearly implicit)
+    dq_dy(1, 1) -= work_.rack_bore_stiffness_npm;
     return true;
   }
 
