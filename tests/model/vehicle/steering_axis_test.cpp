@@ -6,13 +6,23 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
+#include <string>
+
+#include <unistd.h>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include "io/config/vehicle_file.h"
+#include "model/report.h"
+#include "model/tire/tmeasy_bore.h"
 #include "model/vehicle/steering/steering_axis.h"
+#include "model/vehicle/vehicle_model.h"
+#include "tests/support/driver_inputs.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -33,29 +43,32 @@ AxleParams sedan_axis() {
 /// The height of a rigid disc's lowest point after turning it by psi about the steering axis,
 /// built directly for either wheel (side +1 left, -1 right: the axis' ground point inboard by
 /// r_s, its top inwards and rearwards), contact centre at the origin, wheel centre at (0, 0, R).
-double lowest_point_m(const AxleParams& a, int side, double psi) {
+double lowest_point_m(const AxleParams& a, int side, double psi, double radius_m = kRadiusM) {
   const double sd = side;
   const Eigen::Vector3d ground(a.caster_trail_m, -sd * a.scrub_radius_m, 0);
   const Eigen::Vector3d axis = Eigen::Vector3d(-std::tan(a.caster_angle_rad),
                                                -sd * std::tan(a.kingpin_inclination_rad), 1)
                                    .normalized();
   const Eigen::AngleAxisd turn(psi, axis);
-  const Eigen::Vector3d centre = ground + turn * (Eigen::Vector3d(0, 0, kRadiusM) - ground);
+  const Eigen::Vector3d centre = ground + turn * (Eigen::Vector3d(0, 0, radius_m) - ground);
   const Eigen::Vector3d u = turn * Eigen::Vector3d::UnitX(), v = turn * Eigen::Vector3d::UnitZ();
   double lowest = 1e9;
   constexpr int kSamples = 200000;
   for (int i = 0; i < kSamples; ++i) {  // the rim, around its bottom
     const double t = std::numbers::pi * (0.25 + 0.5 * i / kSamples);
-    lowest = std::min(lowest, (centre + kRadiusM * (std::cos(t) * u - std::sin(t) * v)).z());
+    lowest = std::min(lowest, (centre + radius_m * (std::cos(t) * u - std::sin(t) * v)).z());
   }
   return lowest;
 }
 
 /// -dV/dpsi, V = F_z * lift = -F_z h_lowest (psi the wheel's steer, + left, both wheels in the
 /// same frame: the right wheel's construction above is its own, not a mirrored left one).
-double brute_jacking_nm(const AxleParams& a, int side, double steer_rad) {
+double brute_jacking_nm(const AxleParams& a, int side, double steer_rad, double load_n = kLoadN,
+                        double radius_m = kRadiusM) {
   const double d = 1e-4;
-  return kLoadN * (lowest_point_m(a, side, steer_rad + d) - lowest_point_m(a, side, steer_rad - d)) /
+  return load_n *
+         (lowest_point_m(a, side, steer_rad + d, radius_m) -
+          lowest_point_m(a, side, steer_rad - d, radius_m)) /
          (2 * d);
 }
 
@@ -159,6 +172,99 @@ TEST(SteeringAxis, VehicleFileKeys) {
   std::printf("sedan: caster %.4f rad, trail %.3f m, KPI %.4f rad, scrub %.3f m, spindle %.4f m\n",
               f.caster_angle_rad, f.caster_trail_m, f.kingpin_inclination_rad, f.scrub_radius_m,
               f.spindle_offset_m);
+}
+
+/// The sedan file, optionally with the bore torque switched off.
+VehicleParams sedan(bool bore) {
+  if (bore) return io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+  std::ifstream in(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const auto at = text.find("bore_torque = true");
+  EXPECT_NE(at, std::string::npos);
+  text.replace(at, 18, "bore_torque = false");
+  const auto file = std::filesystem::temp_directory_path() /
+                    ("rig_steering_axis_test_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(file) << text;
+  VehicleParams p = io::config::load_vehicle_file(file);
+  std::filesystem::remove(file);
+  return p;
+}
+
+/// The sedan at rest, the steering robot turning the wheel to `wheel_rad` in 2 s and holding it
+/// 1 s (h = 1 ms); returns the last report and the rack force's spread over the last 0.2 s.
+struct Held {
+  ModelReport report{};
+  double rack_force_spread_n = 0;
+};
+Held turn_and_hold(const VehicleParams& p, double wheel_rad) {
+  VehicleModel m(p, 1e-3);
+  (void)m.settle(0.0);
+  Signals s = test::all_driver_inputs();
+  s[Signal::kGearRequest] = 0;
+  Held out;
+  double lo = 1e9, hi = -1e9;
+  for (int k = 1; k <= 3000; ++k) {
+    s[Signal::kSteeringWheelAngleCmd] = wheel_rad * std::min(1.0, k / 2000.0);
+    EXPECT_EQ(m.step(s), StepStatus::kOk) << k;
+    m.fill_report(out.report);
+    if (k > 2800) {
+      lo = std::min(lo, out.report.steering.rack_force_n);
+      hi = std::max(hi, out.report.steering.rack_force_n);
+    }
+  }
+  out.rack_force_spread_n = hi - lo;
+  return out;
+}
+
+// The static sedan (bore torque off), the rack held at a steer angle: each tie rod carries the
+// jacking torque of its wheel through the steering arm, F = -M_jack dgamma/du with
+// dgamma/du = 1 / (arm cos gamma) (gamma = asin(u / arm), the generated eq. 29 tables), M_jack
+// from the turned disc at the wheel's load and rolling radius: within 2 %, restoring (the rack
+// force resists the travel).
+TEST(SteeringAxis, StaticSedanTieRodsCarryTheJackingTorque) {
+  const VehicleParams p = sedan(false);
+  const Held h = turn_and_hold(p, 4.0);
+  const UnitReport& u = h.report.units[0];
+  const double arm = p.steering.steering_arm_m;
+  const double tie[2] = {h.report.steering.tie_rod_force_left_n,
+                         h.report.steering.tie_rod_force_right_n};
+  for (int side_index = 0; side_index < 2; ++side_index) {
+    const WheelReport& w = u.wheels[static_cast<std::size_t>(side_index)];
+    const int side = side_index == 0 ? 1 : -1;
+    const double hand = -brute_jacking_nm(p.axles[0], side, w.steer_angle_rad, w.tire_load_n,
+                                          w.rolling_radius_m) /
+                        (arm * std::cos(w.steer_angle_rad));
+    std::printf("held rack %.4f m, wheel %d steer %.4f rad, load %.0f N: tie rod %.2f N (hand "
+                "%.2f)\n",
+                h.report.steering.rack_travel_m, side_index, w.steer_angle_rad, w.tire_load_n,
+                tie[side_index], hand);
+    EXPECT_NEAR(tie[side_index], hand, 0.02 * std::abs(hand));
+  }
+  EXPECT_GT(h.report.steering.rack_travel_m, 0.01);
+  EXPECT_GT(tie[0] + tie[1], 0);  // restoring: resists the positive travel
+}
+
+// With the bore torque (sticking stiffness ~0.4 MN/m per wheel at the rack) the turn at
+// stand-still stays stable at h = 1 ms and the held rack force is about the slid bore torques
+// plus the jacking through the arms: sum (M_B,max + M_jack) / (arm cos gamma), within 5 %.
+TEST(SteeringAxis, StaticSedanWithBoreTorqueHoldsStable) {
+  const VehicleParams p = sedan(true);
+  const Held h = turn_and_hold(p, 4.0);
+  const UnitReport& u = h.report.units[0];
+  const double arm = p.steering.steering_arm_m;
+  double hand = 0;
+  for (int side_index = 0; side_index < 2; ++side_index) {
+    const WheelReport& w = u.wheels[static_cast<std::size_t>(side_index)];
+    const int side = side_index == 0 ? 1 : -1;
+    const double bore = tire::bore_torque_max_nm(p.axles[0].tire.tmeasy, w.tire_load_n, 1.0);
+    hand += (bore - brute_jacking_nm(p.axles[0], side, w.steer_angle_rad, w.tire_load_n,
+                                     w.rolling_radius_m)) /
+            (arm * std::cos(w.steer_angle_rad));
+  }
+  std::printf("bore on: held rack force %.1f N (hand %.1f), spread over 0.2 s %.3f N\n",
+              h.report.steering.rack_force_n, hand, h.rack_force_spread_n);
+  EXPECT_NEAR(h.report.steering.rack_force_n, hand, 0.05 * hand);
+  EXPECT_LT(h.rack_force_spread_n, 1.0);
 }
 
 }  // namespace
