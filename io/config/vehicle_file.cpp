@@ -99,9 +99,8 @@ TireParams read_tire(StrictTable t) {
   read_trail(t, p.trail);
   // the bore torque (model/tire/tmeasy_bore.h); its stiffness is needed once it is on
   p.bore.enabled = t.boolean("bore_torque", false);
-  p.bore.stiffness_nmprad =
-      p.bore.enabled ? t.number_in("bore_stiffness_nmprad", 1, 1e7)
-                     : t.number_in("bore_stiffness_nmprad", 0, 0, 1e7);
+  p.bore.stiffness_nmprad = p.bore.enabled ? t.number_in("bore_stiffness_nmprad", 1, 1e7)
+                                           : t.number_in("bore_stiffness_nmprad", 0, 0, 1e7);
   p.bore.damping_nmsprad = t.number_in("bore_damping_nmsprad", 0, 0, 1e5);
   p.bore.contact_width_m = t.number_in("contact_width_m", 0.2, 0.01, 2);
   t.finish();
@@ -165,7 +164,8 @@ void read_steering_axis(StrictTable& t, AxleParams& a) {
                     "spindle_offset_m = " + std::to_string(given) +
                         " m disagrees with the axis: (scrub_radius_m + r_0 "
                         "tan(kingpin_inclination_rad)) cos(kingpin_inclination_rad) = " +
-                        std::to_string(a.spindle_offset_m) + " m (give it within 5 mm or leave "
+                        std::to_string(a.spindle_offset_m) +
+                        " m (give it within 5 mm or leave "
                         "it out)");
   }
 }

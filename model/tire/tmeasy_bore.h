@@ -45,13 +45,14 @@ namespace rig::model::tire {
 
 /// One step of the bore element: the new twist and the torque on the wheel about the normal.
 struct BoreStep {
-  double twist_rad = 0;        ///< phi(k+1)
-  double torque_nm = 0;        ///< M_B = -(c_B phi + d_B phi'), limited
-  double stiffness_nmprad = 0; ///< -dM_B/d(turn angle) over the step: c_B + d_B/h sticking, 0 sliding
+  double twist_rad = 0;  ///< phi(k+1)
+  double torque_nm = 0;  ///< M_B = -(c_B phi + d_B phi'), limited
+  double stiffness_nmprad =
+      0;  ///< -dM_B/d(turn angle) over the step: c_B + d_B/h sticking, 0 sliding
 };
 [[nodiscard]] inline BoreStep bore_step(const TmeasyParams& p, double twist_rad,
-                                        double turn_rate_radps, double rolling_mps,
-                                        double load_n, double friction, double h) noexcept {
+                                        double turn_rate_radps, double rolling_mps, double load_n,
+                                        double friction, double h) noexcept {
   const TmeasyBore& b = p.bore;
   if (!b.enabled || load_n <= 0) return {};
   const double length = contact_length_m(p, load_n);

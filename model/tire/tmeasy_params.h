@@ -36,10 +36,10 @@ struct TmeasyTrail {
 /// the patch's torsional deflection about the contact normal with a stiffness and a damping,
 /// limited by M_B,max = (2/3) R_P mu F_z, R_P = (L/2 + B/2)/2 (tmeasy_bore.h). Off by default.
 struct TmeasyBore {
-  bool enabled = false;             ///< bore_torque
-  double stiffness_nmprad = 0;      ///< c_B [N m/rad]
-  double damping_nmsprad = 0;       ///< d_B [N m s/rad]
-  double contact_width_m = 0.2;     ///< B, the patch width [m]
+  bool enabled = false;          ///< bore_torque
+  double stiffness_nmprad = 0;   ///< c_B [N m/rad]
+  double damping_nmsprad = 0;    ///< d_B [N m s/rad]
+  double contact_width_m = 0.2;  ///< B, the patch width [m]
 };
 
 /// All TMeasy parameters of one tire.

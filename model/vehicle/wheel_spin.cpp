@@ -54,8 +54,8 @@ void WheelSpinStage::tie_rods(double h) noexcept {
       loads.bore_nm = bore.torque_nm;
       // at the rack through dgamma/du, in series with the tie rod
       const double at_rack = bore.stiffness_nmprad * w.steer_d_du * w.steer_d_du;
-      if (at_rack > 0) bore_stiffness += at_rack * sp.tie_rod_stiffness_npm /
-                                         (at_rack + sp.tie_rod_stiffness_npm);
+      if (at_rack > 0)
+        bore_stiffness += at_rack * sp.tie_rod_stiffness_npm / (at_rack + sp.tie_rod_stiffness_npm);
     }
     const int side = (k % 2 == 0) ? 1 : -1;
     const double axis_moment_nm = steering_axis_moment_nm(axle, loads, w.steer_kinematic_rad, side);

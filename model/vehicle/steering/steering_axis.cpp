@@ -29,8 +29,7 @@ RotatedZ rotated_z(const Vec3& e, const Vec3& v, double psi) noexcept {
   const double c = std::cos(psi), s = std::sin(psi);
   const double exv_z = e.x() * v.y() - e.y() * v.x();
   const double ev = e.dot(v);
-  return {v.z() * c + exv_z * s + e.z() * ev * (1.0 - c),
-          -v.z() * s + exv_z * c + e.z() * ev * s};
+  return {v.z() * c + exv_z * s + e.z() * ev * (1.0 - c), -v.z() * s + exv_z * c + e.z() * ev * s};
 }
 
 }  // namespace
