@@ -77,6 +77,7 @@ struct VehicleWorkspace {
   /// d(rack force)/d(rack travel) of the sticking bore torques through the tie rods (the
   /// simple model's implicit partial of its lagged rack force) [N/m]
   double rack_bore_stiffness_npm = 0;
+  double rack_force_at_m = 0;  ///< the rack travel where rack_force_n was evaluated
   /// The first steered axle's left and right tie-rod forces on the rack (ModelReport).
   double tie_rod_force_left_n = 0;
   double tie_rod_force_right_n = 0;

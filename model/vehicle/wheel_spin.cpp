@@ -70,6 +70,7 @@ void WheelSpinStage::tie_rods(double h) noexcept {
   }
   work_.rack_force_n = rack_force;
   work_.rack_bore_stiffness_npm = bore_stiffness;
+  work_.rack_force_at_m = rack;
   if (first_steered >= 0) {
     work_.tie_rod_force_left_n =
         work_.wheels[static_cast<std::size_t>(first_steered)].tie_rod_force_n;
