@@ -487,7 +487,7 @@ TEST(VehicleConfig, ManeuverFilesNameTheirVehicleAndRunAtOneMillisecond) {
     run(m, s, 0.2, nullptr);
     EXPECT_NEAR(s[Signal::kVehicleSpeed], settings.initial_speed_mps, 0.5) << entry.path();
   }
-  EXPECT_EQ(files, 5);
+  EXPECT_EQ(files, 9);  // + weave, parking effort (0 and 5 km/h), returnability (issue 15)
 }
 
 TEST(Vehicle, TruckStepSteerSettlesAtOneAndTwoMilliseconds) {
