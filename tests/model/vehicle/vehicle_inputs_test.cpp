@@ -108,7 +108,7 @@ TEST(OtherInputs, OverlayAndIgnitionDefaultsAndStates) {
 // ---- steering overlay ----
 
 struct OverlayResult {
-  double rack_m, expected_m, tb_nm, rack_force_n, wheel_rad;
+  double rack_m, expected_m, tb_nm, rack_force_n, wheel_rad, assist_nm;
 };
 
 // Hand wheel held at 0 by the steering robot (angle mode), a 0.1 rad overlay step at t = 0.5 s
@@ -128,13 +128,15 @@ OverlayResult hold_wheel_with_overlay(double speed_mps) {
   ModelReport r;
   m.fill_report(r);
   return {r.steering.rack_travel_m, 0.1 * i_sb, r.steering.torsion_bar_torque_nm,
-          r.steering.rack_force_n, r.steering.wheel_angle_rad};
+          r.steering.rack_force_n, r.steering.wheel_angle_rad, r.steering.assist_torque_nm};
 }
 
-// Steady state: (T_tb + T_a(T_tb)) / i_SB = F_rack (rack friction 0 at rest), and
+// Steady state: the rack sticks where (T_tb + T_a(T_tb)) / i_SB = F_rack + lambda, |lambda| <=
+// rack_friction_n (stick-predicted dry friction holds the rest), and
 // T_tb = c (delta_wheel - u / i_SB + overlay), so u = i_SB (overlay + delta_wheel - T_tb / c):
-// the overlay times i_SB less the torsion bar's twist that carries the tires' rack force (small,
-// the assist carries most of it) plus the robot's give (delta_wheel = -T_tb / k_robot).
+// the overlay times i_SB less the torsion bar's twist that carries the tires' rack force and
+// the friction's hold (small, the assist carries most of it: T_tb <= i_SB (|F_rack| + F_c) /
+// (1 + G)) plus the robot's give (delta_wheel = -T_tb / k_robot).
 TEST(SteeringOverlay, MovesTheRackByOverlayTimesRackRatioWithTheWheelHeld) {
   const VehicleParams p = sedan();
   const double c = p.steering.torsion_bar_stiffness_nmpr;
@@ -147,7 +149,11 @@ TEST(SteeringOverlay, MovesTheRackByOverlayTimesRackRatioWithTheWheelHeld) {
         "F_rack %.1f N, wheel %.2e rad; i_SB (delta - T_tb/c) %.3e m explains %.3e m\n",
         v, o.rack_m, o.expected_m, 100 * (o.rack_m / o.expected_m - 1), o.tb_nm, o.rack_force_n,
         o.wheel_rad, twist_m, o.rack_m - o.expected_m);
-    EXPECT_NEAR(o.rack_m, o.expected_m, 0.02 * o.expected_m);
+    const double f_c = p.steering.rack_friction_n;
+    const double k_robot = p.steering.robot_stiffness_nmpr;
+    EXPECT_LE(std::abs((o.tb_nm + o.assist_nm) / i_sb - o.rack_force_n), f_c * (1 + 1e-9));
+    const double tb_max_nm = i_sb * (std::abs(o.rack_force_n) + f_c) / (1 + p.steering.assist_gain);
+    EXPECT_NEAR(o.rack_m, o.expected_m, i_sb * tb_max_nm * (1 / c + 1 / k_robot));
     EXPECT_NEAR(o.rack_m - o.expected_m, twist_m, 1e-3 * o.expected_m);
   }
 }
