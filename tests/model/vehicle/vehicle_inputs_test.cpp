@@ -163,7 +163,8 @@ TEST(SteeringOverlay, MovesTheRackByOverlayTimesRackRatioWithTheWheelHeld) {
 // Ignition off at 20 m/s with the throttle pressed and a steady steering angle: the engine only
 // drags (torque = -drag at its speed, the throttle ignored), the assist is 0 and the torsion bar
 // carries the whole rack force, T_tb = i_SB F_rack (the rack's steady balance without assist),
-// against T_tb + T_a = i_SB F_rack with it on.
+// against T_tb + T_a = i_SB F_rack with it on; both up to the stuck rack's dry friction,
+// |T_tb - i_SB F_rack| <= i_SB rack_friction_n (1.22 N m; measured 0.85 N m).
 TEST(Ignition, OffAtSpeedNoEngineTorqueNoAssist) {
   const VehicleParams p = sedan();
   const double i_sb = p.steering.rack_per_pinion_m_per_rad;
@@ -193,7 +194,7 @@ TEST(Ignition, OffAtSpeedNoEngineTorqueNoAssist) {
     EXPECT_DOUBLE_EQ(r.drivetrain.engine_torque_nm, -engine_drag_nm(p.drivetrain, we));
     EXPECT_LT(r.drivetrain.engine_torque_nm, 0.0);
     EXPECT_EQ(r.steering.assist_torque_nm, 0.0);
-    EXPECT_NEAR(tb, i_sb * f, 0.02 * std::abs(i_sb * f));
+    EXPECT_LE(std::abs(tb - i_sb * f), i_sb * p.steering.rack_friction_n * (1 + 1e-9));
     EXPECT_GT(tb, 2 * tb_on);  // the assist carried most of it
   }
 }
