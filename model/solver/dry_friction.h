@@ -166,8 +166,7 @@ inline FrictionSolution solve_friction(const std::array<std::array<double, 4>, 4
     for (int i = 0; i < m; ++i) {
       double v = b[i];
       for (int j = 0; j < m; ++j) v += h * w[i][j] * lambda[j];
-      if (w[i][i] > 0.0)
-        lambda[i] = std::clamp(lambda[i] - v / (h * w[i][i]), -c[i], c[i]);
+      if (w[i][i] > 0.0) lambda[i] = std::clamp(lambda[i] - v / (h * w[i][i]), -c[i], c[i]);
     }
   }
   for (int i = 0; i < m; ++i) {

@@ -219,7 +219,7 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
   Eigen::Index n_ = 0;
   Matrix k_inv_, m_, dq_dy_, dq_dz_, m_vi_;
   Vector y_pred_, q_, z_u_, work_y_, work_z_, q1_, q2_;
-  mutable Vector leading_rhs_, leading_sol_;  ///< solve_mass_leading without a body solve
+  mutable Vector leading_rhs_, leading_sol_;        ///< solve_mass_leading without a body solve
   Eigen::Matrix<double, N, kMaxContacts> minv_jt_;  ///< M_VI^-1 J^T of the friction contacts
   FrictionSet<N> friction_;
   FrictionSolution friction_solution_;

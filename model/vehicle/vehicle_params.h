@@ -89,7 +89,7 @@ struct SteeringParams {
   double torsion_bar_damping_nmspr = 0.3;
   double rack_per_pinion_m_per_rad = 0.0081;  ///< steering box ratio i_SB
   double rack_mass_kg = 2.0;                  ///< rack + pinion + motor reflected
-  double rack_friction_n = 150;  ///< rack dry friction (stick-predicted, solver/dry_friction.h)
+  double rack_friction_n = 150;   ///< rack dry friction (stick-predicted, solver/dry_friction.h)
   double column_friction_nm = 0;  ///< column bearings' dry friction on the wheel angle
   /// Deprecated, ignored: the regularised friction's speed scale (configs still load with it).
   double rack_friction_speed_mps = 0.002;

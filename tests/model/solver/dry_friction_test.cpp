@@ -90,7 +90,7 @@ void ramp_case(double h) {
               h * 1e3, v_at_1, v_1, stop_t, t_s);
   EXPECT_TRUE(slid);
   EXPECT_NEAR(v_at_1, v_1, k / b.mass_kg * h);  // the explicit force sample: O(h)
-  EXPECT_NEAR(stop_t, t_s, h + 1e-9);  // within one step (+ the time sum's rounding)
+  EXPECT_NEAR(stop_t, t_s, h + 1e-9);           // within one step (+ the time sum's rounding)
 }
 
 TEST(DryFriction, MassUnderRampedForceSticksSlidesStopsAt1ms) { ramp_case(1e-3); }

@@ -89,7 +89,8 @@ TEST(SteeringFriction, HysteresisWidthIsTwiceRackFrictionReflectedPlusColumnFric
     const double torque = p.robot_stiffness_nmpr * (r.inputs.steering_angle_cmd_rad - angle) -
                           p.robot_damping_nmspr * r.state.steering_z(0);
     if (t > period / 2 && (prev_angle < 0) != (angle < 0)) {  // centre crossing: interpolate
-      const double at_zero = prev_torque + (torque - prev_torque) * prev_angle / (prev_angle - angle);
+      const double at_zero =
+          prev_torque + (torque - prev_torque) * prev_angle / (prev_angle - angle);
       if (angle > prev_angle) {
         up += at_zero;
         ++ups;

@@ -127,8 +127,9 @@ OverlayResult hold_wheel_with_overlay(double speed_mps) {
   const double i_sb = p.steering.rack_per_pinion_m_per_rad;
   ModelReport r;
   m.fill_report(r);
-  return {r.steering.rack_travel_m, 0.1 * i_sb, r.steering.torsion_bar_torque_nm,
-          r.steering.rack_force_n, r.steering.wheel_angle_rad, r.steering.assist_torque_nm};
+  return {r.steering.rack_travel_m,         0.1 * i_sb,
+          r.steering.torsion_bar_torque_nm, r.steering.rack_force_n,
+          r.steering.wheel_angle_rad,       r.steering.assist_torque_nm};
 }
 
 // Steady state: the rack sticks where (T_tb + T_a(T_tb)) / i_SB = F_rack + lambda, |lambda| <=
