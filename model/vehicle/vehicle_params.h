@@ -98,10 +98,9 @@ struct SteeringParams {
   double assist_gain = 4.0;              ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
   double assist_max_nm = 12.0;
   /// The overriding gear's fastest overlay at the pinion (its motor's speed limit). A step
-  /// command is followed at this rate: taken in one step it jolts the rack (h omega > 2 for the
-  /// boosted torsion bar on the rack mass). With the old regularised rack friction that jolt
-  /// became a two-step cycle; the stick-predicted friction lets it settle and stick (rack speed
-  /// exactly 0 within 3 s at 0, 2, 10 m/s), but the limit stays: it is the motor's.
+  /// command is followed at this rate: in one step it jolts the rack (h omega > 2, boosted torsion
+  /// bar on the rack mass); with the old regularised friction into a two-step cycle, with the
+  /// stick-predicted one it settles and sticks (RESULTS.md). The limit stays: it is the motor's.
   double overlay_rate_max_radps = 10.0;
   /// Which assist acts (a routing decision, set by the rig from [routing] assist_torque_nm):
   /// true: the assist_torque_nm input (the ECU's motor torque) while it is valid, the boost
