@@ -4,7 +4,12 @@
 // with the tie rods' force set by the test (no tires: the load is exactly known).
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -109,6 +114,38 @@ TEST(SteeringFriction, HysteresisWidthIsTwiceRackFrictionReflectedPlusColumnFric
               up / ups, down / downs, width, expected);
   EXPECT_NEAR(width, expected, 0.01 * expected);
   EXPECT_NEAR(up / ups, -down / downs, 0.01 * expected);  // symmetric
+}
+
+// [steering] column_friction_nm: read (default 0 without it), a negative value refused with the
+// key's name; the deprecated rack_friction_speed_mps still loads.
+TEST(SteeringFriction, ColumnFrictionKeyReadAndChecked) {
+  std::ifstream in(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string sedan = text.str();
+  const std::string key = "column_friction_nm = 0.0";
+  ASSERT_NE(sedan.find(key), std::string::npos);
+  ASSERT_NE(sedan.find("rack_friction_speed_mps = 0.002"), std::string::npos);
+  const auto load_with = [&](const std::string& line) {
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / "rig_steering_friction_test.toml";
+    std::string edited = sedan;
+    edited.replace(edited.find(key), key.size(), line);
+    std::ofstream(file) << edited;
+    struct Remove {
+      std::filesystem::path f;
+      ~Remove() { std::filesystem::remove(f); }
+    } remove{file};
+    return io::config::load_vehicle_file(file).steering;
+  };
+  EXPECT_EQ(load_with("column_friction_nm = 0.7").column_friction_nm, 0.7);
+  EXPECT_EQ(load_with("").column_friction_nm, 0.0);
+  try {
+    (void)load_with("column_friction_nm = -0.1");
+    ADD_FAILURE() << "a negative column friction loaded";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("column_friction_nm"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
