@@ -108,60 +108,56 @@ inline bool solve_small(std::array<std::array<double, 4>, 4> a, std::array<doubl
 
 }  // namespace detail
 
-/// w: W (m x m, row-major in the first m rows/cols), b: free end speeds, c: capacities.
-inline FrictionSolution solve_friction(const std::array<std::array<double, 4>, 4>& w,
-                                       const std::array<double, 4>& b,
-                                       const std::array<double, 4>& c, int m, double h) noexcept {
-  FrictionSolution s;
-  int cases = 1;
-  for (int i = 0; i < m; ++i) cases *= 3;
-  const double tol = 1e-12;
-  for (int code = 0; code < cases; ++code) {
-    std::array<FrictionState, 4> st{};
-    int digits = code;
-    for (int i = 0; i < m; ++i) {
-      st[i] = static_cast<FrictionState>(digits % 3);
-      digits /= 3;
-    }
-    // sliding forces are known; the stuck ones make their speeds zero
-    std::array<double, 4> lambda{};
-    std::array<int, 4> stuck{};
-    int ns = 0;
-    for (int i = 0; i < m; ++i) {
-      if (st[i] == FrictionState::kSlidePositive) lambda[i] = -c[i];
-      if (st[i] == FrictionState::kSlideNegative) lambda[i] = c[i];
-      if (st[i] == FrictionState::kStick) stuck[ns++] = i;
-    }
-    if (ns > 0) {
-      std::array<std::array<double, 4>, 4> a{};
-      std::array<double, 4> r{}, x{};
-      for (int p = 0; p < ns; ++p) {
-        const int i = stuck[p];
-        r[p] = -b[i] / h;
-        for (int j = 0; j < m; ++j)
-          if (st[j] != FrictionState::kStick) r[p] -= w[i][j] * lambda[j];
-        for (int q = 0; q < ns; ++q) a[p][q] = w[i][stuck[q]];
-      }
-      if (!detail::solve_small(a, r, ns, x)) continue;
-      for (int p = 0; p < ns; ++p) lambda[stuck[p]] = x[p];
-    }
-    bool consistent = true;
-    for (int i = 0; i < m && consistent; ++i) {
-      double v = b[i];
-      for (int j = 0; j < m; ++j) v += h * w[i][j] * lambda[j];
-      const double scale = std::abs(b[i]) + tol;
-      if (st[i] == FrictionState::kStick) consistent = std::abs(lambda[i]) <= c[i] * (1 + tol);
-      if (st[i] == FrictionState::kSlidePositive) consistent = v >= -tol * scale;
-      if (st[i] == FrictionState::kSlideNegative) consistent = v <= tol * scale;
-    }
-    if (!consistent) continue;
-    s.force = lambda;
-    s.state = st;
-    return s;
+namespace detail {
+
+using Square4 = std::array<std::array<double, 4>, 4>;
+using Column4 = std::array<double, 4>;
+
+/// One stick / slide set (3^m code, contact i's digit: 0 stick, 1 slide up, 2 slide down): the
+/// sliding forces are their capacities, the stuck ones make their speeds zero. True and the
+/// forces if the set is consistent (stuck within capacity, sliding in its direction).
+inline bool try_friction_set(const Square4& w, const Column4& b, const Column4& c, int m, double h,
+                             int code, Column4& lambda, std::array<FrictionState, 4>& st) noexcept {
+  std::array<int, 4> stuck{};
+  int ns = 0;
+  for (int i = 0; i < m; ++i, code /= 3) {
+    st[i] = static_cast<FrictionState>(code % 3);
+    lambda[i] = st[i] == FrictionState::kSlidePositive   ? -c[i]
+                : st[i] == FrictionState::kSlideNegative ? c[i]
+                                                         : 0.0;
+    if (st[i] == FrictionState::kStick) stuck[ns++] = i;
   }
-  // fallback: projected Gauss-Seidel on v = b + h W lambda = 0, lambda in [-c, c]
+  if (ns > 0) {  // W_SS lambda_S = -b_S / h - W_SL lambda_L
+    Square4 a{};
+    Column4 r{}, x{};
+    for (int p = 0; p < ns; ++p) {
+      const int i = stuck[p];
+      r[p] = -b[i] / h;
+      for (int j = 0; j < m; ++j)
+        if (st[j] != FrictionState::kStick) r[p] -= w[i][j] * lambda[j];
+      for (int q = 0; q < ns; ++q) a[p][q] = w[i][stuck[q]];
+    }
+    if (!solve_small(a, r, ns, x)) return false;
+    for (int p = 0; p < ns; ++p) lambda[stuck[p]] = x[p];
+  }
+  constexpr double kTol = 1e-12;
+  for (int i = 0; i < m; ++i) {
+    double v = b[i];
+    for (int j = 0; j < m; ++j) v += h * w[i][j] * lambda[j];
+    const double scale = std::abs(b[i]) + kTol;
+    if (st[i] == FrictionState::kStick && !(std::abs(lambda[i]) <= c[i] * (1 + kTol))) return false;
+    if (st[i] == FrictionState::kSlidePositive && v < -kTol * scale) return false;
+    if (st[i] == FrictionState::kSlideNegative && v > kTol * scale) return false;
+  }
+  return true;
+}
+
+/// Fallback: projected Gauss-Seidel on v = b + h W lambda = 0, lambda in [-c, c], 200 sweeps.
+inline FrictionSolution friction_gauss_seidel(const Square4& w, const Column4& b, const Column4& c,
+                                              int m, double h) noexcept {
+  FrictionSolution s;
   s.exact = false;
-  std::array<double, 4> lambda{};
+  Column4 lambda{};
   for (int sweep = 0; sweep < 200; ++sweep) {
     for (int i = 0; i < m; ++i) {
       double v = b[i];
@@ -176,6 +172,19 @@ inline FrictionSolution solve_friction(const std::array<std::array<double, 4>, 4
                                      : FrictionState::kStick;
   }
   return s;
+}
+
+}  // namespace detail
+
+/// w: W (m x m, row-major in the first m rows/cols), b: free end speeds, c: capacities.
+inline FrictionSolution solve_friction(const detail::Square4& w, const detail::Column4& b,
+                                       const detail::Column4& c, int m, double h) noexcept {
+  FrictionSolution s;
+  int cases = 1;
+  for (int i = 0; i < m; ++i) cases *= 3;
+  for (int code = 0; code < cases; ++code)
+    if (detail::try_friction_set(w, b, c, m, h, code, s.force, s.state)) return s;
+  return detail::friction_gauss_seidel(w, b, c, m, h);
 }
 
 }  // namespace rig::model::solver
