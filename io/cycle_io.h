@@ -24,6 +24,9 @@ struct IoEvent {
   std::array<char, 160> detail{};  ///< free text
 };
 
+/// What a lock-step wait (CycleIo::wait_cycle_frame) found.
+enum class CycleFrameWait { kNoCycleFrames, kReceived, kTimeout };
+
 /// An adapter that exchanges model signals with the outside once per cycle. Both calls run on
 /// the RT thread: non-blocking, allocation-free, no exceptions. Failures are counted, never fatal.
 class CycleIo {
@@ -47,6 +50,23 @@ class CycleIo {
     (void)event;
     return false;
   }
+
+  // ---- cycle frames (issue 15: rack-in-the-loop, rig run --lockstep; docs/can.md) ----
+  /// Called once at construction of the loop: the adapter's messages with a cycle time of at
+  /// most `period_ns` (received and sent) are its cycle frames. Default: none.
+  virtual void set_cycle_frames(std::int64_t period_ns) noexcept { (void)period_ns; }
+  /// Lock-step: blocks (the only blocking call, and only with --lockstep) until a received cycle
+  /// frame is pending or was taken in since the last receive(), at most `timeout_ns` of real
+  /// time; frames taken in are stamped `loop_ns` (the loop's time of the cycle).
+  virtual CycleFrameWait wait_cycle_frame(std::int64_t loop_ns, std::int64_t timeout_ns) noexcept {
+    (void)loop_ns;
+    (void)timeout_ns;
+    return CycleFrameWait::kNoCycleFrames;
+  }
+  /// After receive(): whether it took in a received cycle frame; after transmit(): whether it
+  /// sent one.
+  [[nodiscard]] virtual bool cycle_frame_received() const noexcept { return false; }
+  [[nodiscard]] virtual bool cycle_frame_sent() const noexcept { return false; }
 };
 
 }  // namespace rig::io

@@ -195,6 +195,7 @@ RigConfig load_config(const std::filesystem::path& file) {
     c.can = io::can::bridge::read_can_settings(*t, c.catalogue);
   if (routing) locate_can_routes(*routing, requests, routes, c);
   if (auto t = top.optional_table("lcm")) c.lcm = io::lcm::read_lcm_settings(*t, c.catalogue);
+  c.kpis = kpi::read_kpis(top, *c.catalogue);
   top.finish();  // unknown top-level sections
   c.routing = resolve_routing(requests, driver_writes(c));
   return c;

@@ -91,6 +91,7 @@ Executive::Executive(const ExecutiveParams& params, rt::Clock& clock, model::Ste
       log_(log),
       handoff_(params.snapshot_capacity, params.offline),
       dispatcher_(handoff_, std::move(sinks), log) {
+  for (io::CycleIo* a : io_) a->set_cycle_frames(period_ns_);
   signals_.source = sources;
   info_.period_s = params.period_s;
   info_.offline = params.offline;
@@ -128,6 +129,13 @@ void Executive::read_io_counters(io::IoCounters& sum) const noexcept {
   }
 }
 
+/// The loop's time at the cycle's deadline; lock-step: the simulated periods (the waits are the
+/// bench's time).
+std::int64_t Executive::elapsed_ns(const LoopState& loop) const noexcept {
+  if (params_.lockstep) return static_cast<std::int64_t>(loop.cycle + 1) * period_ns_;
+  return loop.deadline_ns - start_ns_;
+}
+
 StopReason Executive::run_loop() {
   start_ns_ = clock_.now_ns();
   LoopState loop{start_ns_ + period_ns_, 0};
@@ -136,7 +144,7 @@ StopReason Executive::run_loop() {
   while (reason == StopReason::kNone) {
     if (stop_requested_.load(std::memory_order_relaxed)) {
       reason = StopReason::kRequested;
-    } else if (duration_ns > 0 && loop.deadline_ns - start_ns_ > duration_ns) {
+    } else if (duration_ns > 0 && elapsed_ns(loop) > duration_ns) {
       reason = StopReason::kDuration;
     } else {
       reason = cycle(loop);
@@ -153,9 +161,15 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
   t.deadline_ns = loop.deadline_ns;
   t.wake_ns = clock_.now_ns();
   t.lateness_ns = t.wake_ns - t.deadline_ns;
+  // lock-step: the adapters run on the loop's grid (their timeouts and send grids count
+  // simulated periods, as the model does), whatever the waits took
+  const std::int64_t io_ns =
+      params_.lockstep ? start_ns_ + static_cast<std::int64_t>(loop.cycle + 1) * period_ns_
+                       : t.wake_ns;
+  if (params_.lockstep) wait_lockstep(loop, t, io_ns);
   PhaseTimer phases(clock_, t);
 
-  for (io::CycleIo* a : io_) a->receive(t.wake_ns, signals_);
+  for (io::CycleIo* a : io_) a->receive(io_ns, signals_);
   log_io_events(t.wake_ns);
   phases.end(io::Phase::kInputs);
   if (driver_ != nullptr) driver_->update(model_.time_s(), signals_);
@@ -165,7 +179,8 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
   fill_report();
   const std::int64_t model_end_ns = phases.end(io::Phase::kModel);
   const io::signals::CycleView view{signals_, report_};
-  for (io::CycleIo* a : io_) a->transmit(model_end_ns, view);
+  for (io::CycleIo* a : io_) a->transmit(params_.lockstep ? io_ns : model_end_ns, view);
+  note_cycle_frames(loop.cycle, model_end_ns);
   phases.end(io::Phase::kOutputs);
   t.sim_time_s = model_.time_s();
 
@@ -180,6 +195,69 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
     if (const StopReason r = after_fault(status, t, end_ns); r != StopReason::kNone) return r;
   }
   return decision.action == OverrunAction::kAbort ? StopReason::kAbortAfter : StopReason::kNone;
+}
+
+/// Lock-step: waits for a received cycle frame (the adapters that have cycle frames). The wait
+/// is the bench's time, not the loop's: the cycle's deadline moves to its end, so neither the
+/// lateness nor the overrun policy sees it (the summary's "cycle_frames" does).
+void Executive::wait_lockstep(LoopState& loop, io::CycleTiming& t, std::int64_t io_ns) noexcept {
+  bool waited = false, timed_out = false;
+  for (io::CycleIo* a : io_) {
+    const io::CycleFrameWait w = a->wait_cycle_frame(io_ns, params_.lockstep_timeout_ns);
+    waited = waited || w != io::CycleFrameWait::kNoCycleFrames;
+    timed_out = timed_out || w == io::CycleFrameWait::kTimeout;
+  }
+  if (!waited) return;
+  const std::int64_t now_ns = clock_.now_ns();
+  ++cycle_frames_.lockstep_waits;
+  const auto wait_ns = static_cast<std::uint64_t>(now_ns - t.wake_ns);
+  if (wait_ns > cycle_frames_.lockstep_wait_max_ns) cycle_frames_.lockstep_wait_max_ns = wait_ns;
+  if (timed_out) {
+    ++cycle_frames_.lockstep_timeouts;
+    char detail[160];
+    std::snprintf(detail, sizeof detail,
+                  "cycle %llu: no cycle frame within %.0f ms; the cycle runs on the held inputs",
+                  static_cast<unsigned long long>(t.cycle),
+                  static_cast<double>(params_.lockstep_timeout_ns) * 1e-6);
+    log_.event(clock_.realtime_ns(), now_ns, "lockstep_timeout", detail);
+  }
+  if (now_ns > loop.deadline_ns) loop.deadline_ns = now_ns;
+  t.deadline_ns = loop.deadline_ns;
+  t.wake_ns = now_ns;
+  t.lateness_ns = 0;
+}
+
+/// The cycle numbers of the answers: a received cycle frame (rx cycle) is answered by the
+/// first cycle frame sent from that cycle on (tx cycle).
+void Executive::note_cycle_frames(std::uint64_t cycle, std::int64_t now_ns) noexcept {
+  bool received = false, sent = false;
+  for (const io::CycleIo* a : io_) {
+    received = received || a->cycle_frame_received();
+    sent = sent || a->cycle_frame_sent();
+  }
+  const auto c = static_cast<std::int64_t>(cycle);
+  if (received) {
+    ++cycle_frames_.received;
+    if (pending_rx_cycle_ < 0) pending_rx_cycle_ = c;  // the oldest unanswered one
+  }
+  if (!sent || pending_rx_cycle_ < 0) return;
+  const std::int64_t lag = c - pending_rx_cycle_;
+  cycle_frames_.last_rx_cycle = pending_rx_cycle_;
+  cycle_frames_.last_tx_cycle = c;
+  if (lag == 0) {
+    ++cycle_frames_.answered_same_cycle;
+  } else if (lag == 1) {
+    ++cycle_frames_.answered_next_cycle;
+  } else {
+    ++cycle_frames_.answered_later;
+    char detail[160];
+    std::snprintf(detail, sizeof detail,
+                  "the cycle frame received in cycle %lld was answered in cycle %lld",
+                  static_cast<long long>(pending_rx_cycle_), static_cast<long long>(c));
+    log_.event(clock_.realtime_ns(), now_ns, "late_answer", detail);
+  }
+  // a frame received in this cycle is answered by this cycle's send
+  pending_rx_cycle_ = -1;
 }
 
 /// The adapters' events (bus state changes, rate-limited reports) into the event log.

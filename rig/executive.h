@@ -45,6 +45,13 @@ struct ExecutiveParams {
   /// model at its last fault-free state, outputs flagged invalid, the loop going on (true).
   bool hold_on_vehicle_fault = false;
   std::vector<std::string> unit_files;  ///< the vehicle file of each unit, to name a fault's
+  /// rig run --lockstep (docs/can.md "Lock-step"): each cycle waits, at most lockstep_timeout_ns,
+  /// for a received cycle frame (CycleIo::wait_cycle_frame) before its inputs; the wait is not
+  /// lateness (the cycle's deadline moves to its end), a timeout is counted, logged, and the
+  /// cycle runs on the held inputs. The adapters then run on the loop's grid (start + (cycle +
+  /// 1) period): their timeouts and send grids count simulated periods.
+  bool lockstep = false;
+  std::int64_t lockstep_timeout_ns = 100'000'000;
 };
 
 enum class StopReason {
@@ -57,6 +64,21 @@ enum class StopReason {
   kRtRefused
 };
 const char* stop_reason_name(StopReason reason);
+
+/// The cycle numbers of the answers (issue 15): a received cycle frame (the rack's position) is
+/// answered by the next sent cycle frame (the tie-rod forces computed from it); counted by
+/// tx_cycle - rx_cycle.
+struct CycleFrameStats {
+  std::uint64_t lockstep_waits = 0;     ///< cycles that waited (--lockstep)
+  std::uint64_t lockstep_timeouts = 0;  ///< of these, without the frame in the timeout
+  std::uint64_t lockstep_wait_max_ns = 0;
+  std::uint64_t received = 0;  ///< cycles that took in a received cycle frame
+  std::uint64_t answered_same_cycle = 0;
+  std::uint64_t answered_next_cycle = 0;
+  std::uint64_t answered_later = 0;  ///< tx - rx > 1 (each one logged, "late_answer")
+  std::int64_t last_rx_cycle = -1;   ///< the last answered or pending rx cycle
+  std::int64_t last_tx_cycle = -1;
+};
 
 /// Test hook called on the loop thread at the end of every cycle.
 class CycleHook {
@@ -136,6 +158,8 @@ class Executive {
     return sum;
   }
   [[nodiscard]] const io::RunInfo& run_info() const noexcept { return info_; }
+  /// The cycle frames' counts (exact once the loop has stopped).
+  [[nodiscard]] const CycleFrameStats& cycle_frames() const noexcept { return cycle_frames_; }
   /// Why RT settings were refused ("" if all were granted), after prepare().
   [[nodiscard]] const std::string& rt_problems() const noexcept { return rt_problems_; }
 
@@ -145,6 +169,9 @@ class Executive {
   model::StepStatus step_model() noexcept;
   void fill_report() noexcept;
   void log_io_events(std::int64_t now_ns) noexcept;
+  void wait_lockstep(LoopState& loop, io::CycleTiming& t, std::int64_t io_ns) noexcept;
+  [[nodiscard]] std::int64_t elapsed_ns(const LoopState& loop) const noexcept;
+  void note_cycle_frames(std::uint64_t cycle, std::int64_t now_ns) noexcept;
   StopReason after_fault(model::StepStatus status, const io::CycleTiming& t,
                          std::int64_t end_ns) noexcept;
   OverrunDecision handoff(io::CycleTiming& timing, PhaseTimer& phases,
@@ -176,6 +203,8 @@ class Executive {
   std::int64_t start_ns_ = 0;             // loop thread
   model::ModelFault fault_{};             // loop thread; read after it stopped
   bool held_ = false;                     // loop thread: the model is frozen by a fault
+  CycleFrameStats cycle_frames_{};        // loop thread; read after it stopped
+  std::int64_t pending_rx_cycle_ = -1;    // loop thread: a received cycle frame not yet answered
 
   rt::LogHistogram lateness_;
   rt::LogHistogram compute_;

@@ -73,6 +73,11 @@ void add_run(CLI::App& app, rig::RunOptions& run, std::string& stall) {
   run_cmd->add_option("--priority", run.priority, "SCHED_FIFO priority")->check(CLI::Range(1, 99));
   run_cmd->add_flag("--require-rt", run.require_rt,
                     "fail if SCHED_FIFO, mlockall or the CPU pinning is refused");
+  run_cmd->add_flag("--lockstep", run.lockstep,
+                    "test mode: each cycle waits, up to 100 ms, for its CAN cycle frame (the "
+                    "received messages with a cycle time <= the period) before stepping; a "
+                    "timeout is counted and logged, the cycle runs on the held inputs; the wait "
+                    "is not a deadline miss (docs/can.md, Lock-step)");
   run_cmd->add_option("--inject-stall", stall, "test hook: CYCLE:MS")->group("");
 }
 

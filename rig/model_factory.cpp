@@ -40,6 +40,7 @@ std::unique_ptr<model::SteppedModel> make_vehicle_model(
   const double step_s = config.rig.period_s;
   model::vehicle::VehicleParams params = settings.params;
   params.steering.assist_from_input = assist_input;
+  params.steering.angle_from_input = config.routing.angle_from_input;
   params.fault_limits = config.rig.fault_limits;
   auto m = std::make_unique<model::vehicle::VehicleModel>(params, step_s);
   const double v = settings.initial_speed_mps;
@@ -58,6 +59,7 @@ std::unique_ptr<model::SteppedModel> make_combination_model(
   p.units = settings.units;
   for (auto& unit : p.units) {
     unit.steering.assist_from_input = assist_input;
+    unit.steering.angle_from_input = config.routing.angle_from_input;
     unit.fault_limits = config.rig.fault_limits;
   }
   p.joints = settings.joints;

@@ -53,7 +53,10 @@ Routing resolve_routing(const RoutingRequests& requests, const io::InputSet& dri
       r.driver_inputs.set(i);
     }
   }
-  r.assist_from_input = r.can_inputs[model::index(model::Signal::kAssistTorque)];
+  const std::size_t assist = model::index(model::Signal::kAssistTorque);
+  r.assist_from_input = r.can_inputs[assist] || driver_writes[assist];
+  const std::size_t angle = model::index(model::Signal::kSteeringWheelAngleCmd);
+  r.angle_from_input = r.can_inputs[angle] || r.driver_inputs[angle];
   return r;
 }
 

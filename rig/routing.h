@@ -46,8 +46,13 @@ struct Routing {
   std::array<model::SignalSource, model::kSlotCount> source{};  ///< published, per input
   io::InputSet can_inputs;                                      ///< what the CAN bridge feeds
   io::InputSet driver_inputs;                                   ///< what the driver feeds
-  /// The assist torque: the ECU's (`assist_torque_nm = "can"`), else the built-in boost curve.
+  /// The assist torque: the ECU's (`assist_torque_nm = "can"`) or the driver table's (a column
+  /// `assist_torque_nm`: the maneuver plays the ECU, e.g. 0 for assist off with the ignition on),
+  /// else the built-in boost curve.
   bool assist_from_input = false;
+  /// The steering angle command has a source (driver or CAN): the robot lets go of the wheel
+  /// while it is not valid (model::vehicle::SteeringParams::angle_from_input).
+  bool angle_from_input = false;
 };
 
 /// `driver_writes`: the inputs the configured driver can write (none without a driver). A

@@ -45,7 +45,8 @@ int run(const RunOptions& options) {
                       parts.params.abort_after,
                       wall_start_ns,
                       {sinks.begin(), sinks.end()},
-                      parts.summary.get()};
+                      parts.summary.get(),
+                      parts.kpis.get()};
   return finish_run(exec, *parts.log, finish, options, notifier, wall);
 }
 

@@ -70,6 +70,8 @@ void open_outputs(const RunOptions& options, RunParts& parts) {
                                {"--summary-json", options.summary_json}},
                               input_files(parts.config));
   parts.sinks = make_sinks(parts.config, options);
+  if (!parts.config.kpis.empty())
+    parts.kpis = std::make_unique<kpi::KpiRecorder>(parts.config.kpis);
   parts.log = std::make_unique<EventLog>(options.overrun_log, 4096, keep);
   if (options.summary_json.empty()) return;
   const int fd = io::log::open_output_file({"--summary-json", options.summary_json}, keep);
@@ -80,7 +82,11 @@ void open_outputs(const RunOptions& options, RunParts& parts) {
 }  // namespace
 
 std::vector<io::CycleIo*> RunParts::io_adapters() const { return pointers(io); }
-std::vector<io::SnapshotSink*> RunParts::snapshot_sinks() const { return pointers(sinks); }
+std::vector<io::SnapshotSink*> RunParts::snapshot_sinks() const {
+  std::vector<io::SnapshotSink*> out = pointers(sinks);
+  if (kpis) out.push_back(kpis.get());
+  return out;
+}
 
 ExecutiveParams executive_params(const RigConfig& config, const RunOptions& options) {
   ExecutiveParams p;
@@ -93,6 +99,7 @@ ExecutiveParams executive_params(const RigConfig& config, const RunOptions& opti
   p.cpu = options.cpu ? *options.cpu : config.rig.cpu;
   p.stall_cycle = options.stall_cycle;
   p.stall_ms = options.stall_ms;
+  p.lockstep = options.lockstep;
   p.hold_on_vehicle_fault = config.rig.hold_on_vehicle_fault;
   if (config.model.vehicle) p.unit_files.push_back(config.model.vehicle->file.string());
   if (config.model.combination) {

@@ -14,6 +14,7 @@
 #include "rig/driver/driver.h"
 #include "rig/event_log.h"
 #include "rig/executive.h"
+#include "rig/kpi/kpi_recorder.h"
 #include "rig/run_options.h"
 
 namespace rig {
@@ -31,6 +32,8 @@ struct RunParts {
   std::unique_ptr<model::SteppedModel> model;
   std::unique_ptr<driver::Driver> driver;
   std::unique_ptr<EventLog> log;
+  /// [[kpi]]: records their signals (the last snapshot sink); null without [[kpi]].
+  std::unique_ptr<kpi::KpiRecorder> kpis;
   /// --summary-json, created before the loop starts (written at the end); null if none.
   std::unique_ptr<std::FILE, FileCloser> summary;
 

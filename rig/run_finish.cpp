@@ -77,6 +77,7 @@ int finish_run(const Executive& exec, EventLog& log, const FinishInputs& in,
     failures.push_back(
         {log.write_failures(), "overrun log " + options.overrun_log + ": " + log.write_error()});
   extras.write_failures = failures;
+  if (in.kpis != nullptr) extras.kpis = in.kpis->results();
   extras.exit_code = !message.empty() ? 1 : failures.empty() ? 0 : kExitOutputLost;
   std::cerr.clear();  // a line dropped by a full stderr (rig/stderr_relay.h) set badbit
   std::cerr << summary_report(exec, extras);

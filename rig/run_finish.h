@@ -11,6 +11,7 @@
 #include "io/systemd/notifier.h"
 #include "rig/event_log.h"
 #include "rig/executive.h"
+#include "rig/kpi/kpi_recorder.h"
 #include "rig/rt/clock.h"
 #include "rig/run_options.h"
 
@@ -25,6 +26,7 @@ struct FinishInputs {
   std::int64_t wall_start_ns = 0;              ///< CLOCK_MONOTONIC at assembly's end
   std::vector<const io::SnapshotSink*> sinks;  ///< stopped: their write failures are final
   std::FILE* summary = nullptr;                ///< --summary-json, opened before the loop
+  const kpi::KpiRecorder* kpis = nullptr;      ///< [[kpi]] (stopped), null if none
 };
 
 /// Returns the exit code: 0; 1 (abort-after, non-finite model, a vehicle fault stopped or held);

@@ -20,6 +20,8 @@ struct RunOptions {
   std::optional<int> cpu;       ///< overrides [rig] cpu
   std::optional<int> priority;  ///< overrides [rig] priority
   bool require_rt = false;
+  /// --lockstep: each cycle waits, up to 100 ms, for its received cycle frame (docs/can.md).
+  bool lockstep = false;
   /// Test hook (hidden --inject-stall CYCLE:MS): sleep MS ms in the model phase of CYCLE.
   std::uint64_t stall_cycle = 0;
   std::int64_t stall_ms = 0;

@@ -151,6 +151,16 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
       "  \"skipped_periods\": %llu,\n  \"snapshots_dropped\": %llu,\n  \"events_lost\": %llu,\n",
       ull(e.skipped_periods()), ull(e.snapshots_dropped()), ull(x.events_lost));
   j += "  \"can\": " + can_json(e.io_counters()) + ",\n";
+  const CycleFrameStats& cf = e.cycle_frames();
+  j +=
+      fmt("  \"cycle_frames\": {\"received\": %llu, \"answered_same_cycle\": %llu, "
+          "\"answered_next_cycle\": %llu, \"answered_later\": %llu, \"last_rx_cycle\": %lld, "
+          "\"last_tx_cycle\": %lld, \"lockstep_waits\": %llu, \"lockstep_timeouts\": %llu, "
+          "\"lockstep_wait_max_ns\": %llu},\n",
+          ull(cf.received), ull(cf.answered_same_cycle), ull(cf.answered_next_cycle),
+          ull(cf.answered_later), static_cast<long long>(cf.last_rx_cycle),
+          static_cast<long long>(cf.last_tx_cycle), ull(cf.lockstep_waits),
+          ull(cf.lockstep_timeouts), ull(cf.lockstep_wait_max_ns));
   j += "  \"outputs\": {";
   bool first = true;
   for (const auto& s : model::kSignalTable) {
@@ -164,6 +174,7 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
     j += "  \"vehicle_fault\": " + vehicle_fault_json(e.vehicle_fault(), e.fault_unit_file()) +
          ",\n";
   }
+  j += "  \"kpis\": " + kpi::kpis_json(x.kpis) + ",\n";
   j += "  \"write_failures\": " + write_failures_json(x.write_failures) + ",\n";
   j += "  \"stop_reason\": " + json_string(x.stop_reason) + ",\n";
   j += fmt("  \"exit_code\": %d\n}\n", x.exit_code);

@@ -9,6 +9,7 @@
 #include "io/snapshot_sink.h"
 
 #include "rig/executive.h"
+#include "rig/kpi/kpi_recorder.h"
 
 namespace rig {
 
@@ -18,6 +19,7 @@ struct SummaryExtras {
   int exit_code = 0;
   std::uint64_t events_lost = 0;
   std::vector<io::WriteFailures> write_failures;  ///< outputs that lost data (a full disk)
+  std::vector<kpi::KpiResult> kpis;               ///< [[kpi]] of the configuration (rig/kpi)
 };
 
 /// The status line (rig/status_line.h) of the executive's figures so far.
@@ -25,7 +27,7 @@ std::string summary_line(const Executive& exec);
 /// Multi-line report including a log-scale lateness histogram.
 std::string summary_report(const Executive& exec, const SummaryExtras& extras);
 /// The JSON document (keys: cycles, deadline_misses, sim_time_s, wall_time_s, drift_s,
-/// lateness_ns, compute_ns, phase_max_ns, histogram, rt, policy, can, outputs, ...).
+/// lateness_ns, compute_ns, phase_max_ns, histogram, rt, policy, can, outputs, kpis, ...).
 std::string summary_json(const Executive& exec, const SummaryExtras& extras);
 
 }  // namespace rig

@@ -112,6 +112,7 @@ model::vehicle::AxleKinematicsParams read_kinematics(StrictTable t) {
   k.camber_per_travel_radpm = t.number_in("camber_per_travel_radpm", 0, -20, 20);
   k.toe_rad = t.number_in("toe_rad", 0, -0.1, 0.1);
   k.bump_steer_radpm = t.number_in("bump_steer_radpm", 0, -5, 5);
+  k.ackermann_percent = t.number_in("ackermann_percent", 0, -100, 150);
   k.bicubic = t.choice("interpolation", "bicubic", {"bicubic", "bilinear"}) == "bicubic";
   if (auto g = t.optional_table("grid")) {
     k.grid.z_min = g->number_in("z_min_m", -1, 1);
@@ -132,6 +133,10 @@ model::vehicle::AxleKinematicsParams read_kinematics(StrictTable t) {
                                " values (z-major)");
       return v;
     };
+    if (k.ackermann_percent != 0)
+      throw t.error("ackermann_percent",
+                    "ackermann_percent applies to generated steer tables, not to given ones "
+                    "(give each wheel's gamma_rad instead)");
     k.x_m = table("x_m");
     k.y_m = table("y_m");
     k.alpha_rad = table("alpha_rad");
@@ -180,10 +185,6 @@ std::optional<double> read_steering(StrictTable t, model::vehicle::SteeringParam
   s.system = system == "column"          ? SteeringSystemKind::kColumn
              : system == "steer_by_wire" ? SteeringSystemKind::kSteerByWire
                                          : SteeringSystemKind::kRackInTheLoop;
-  // issue 15 builds these; until then a clear refusal rather than a silent simple model
-  if (s.model != SteeringModel::kSimple) throw t.error("model", "\"enhanced\" is not built yet");
-  if (s.system != SteeringSystemKind::kColumn)
-    throw t.error("system", "\"" + system + "\" is not built yet");
   s.torque_input = t.choice("input", "angle", {"angle", "torque"}) == "torque";
   s.wheel_inertia_kgm2 = t.number_in("wheel_inertia_kgm2", 1e-3, 10);
   s.column_damping_nmspr = t.number_in("column_damping_nmspr", 0, 100);
@@ -200,10 +201,26 @@ std::optional<double> read_steering(StrictTable t, model::vehicle::SteeringParam
   s.column_friction_nm = t.number_in("column_friction_nm", 0, 0, 1e3);
   s.steering_arm_m = t.number_in("steering_arm_m", 0.01, 2);
   s.tie_rod_stiffness_npm = t.number_in("tie_rod_stiffness_npm", 1e3, 1e10);
+  // the enhanced model's knuckles (model/vehicle/steering/README.md); read for both models
+  s.tie_rod_damping_nspm = t.number_in("tie_rod_damping_nspm", 3000, 0, 1e7);
+  s.knuckle_inertia_kgm2 = t.number_in("knuckle_inertia_kgm2", 1.0, 1e-3, 100);
   std::optional<double> trail_m;
   if (t.has("trail_m")) trail_m = t.number_in("trail_m", 0, 0.5);
   s.assist_gain = t.number_in("assist_gain", 0, 100);
   s.assist_max_nm = t.number_in("assist_max_nm", 1e-3, 1e4);
+  // the overriding gear (steering/README.md "overriding gear"); defaults: today's simple gear
+  s.overlay_ratio = t.number_in("overlay_ratio", 1.0, 1e-3, 1e3);
+  s.overlay_bandwidth_hz = t.number_in("overlay_bandwidth_hz", 0.0, 0, 1e3);
+  s.overlay_rate_max_radps = t.number_in("overlay_rate_max_radps", 10.0, 1e-3, 1e3);
+  if (s.system == SteeringSystemKind::kSteerByWire) {  // steering/README.md "steer-by-wire"
+    s.feedback_torque_max_nm = t.number_in("feedback_torque_max_nm", 0, 1e3);
+    s.rack_actuator_ratio_m_per_rad = t.number_in("rack_actuator_ratio_m_per_rad", 1e-5, 1);
+    s.rack_actuator_inertia_kgm2 = t.number_in("rack_actuator_inertia_kgm2", 0, 1);
+    s.rack_actuator_force_max_n = t.number_in("rack_actuator_force_max_n", 0, 1e6);
+    s.rack_actuator_damping_nspm = t.number_in("rack_actuator_damping_nspm", 0, 1e6);
+    s.rack_actuator_time_constant_s = t.number_in("rack_actuator_time_constant_s", 1e-4, 10);
+    s.rack_actuator_bandwidth_hz = t.number_in("rack_actuator_bandwidth_hz", 0.1, 100);
+  }
   t.finish();
   return trail_m;
 }

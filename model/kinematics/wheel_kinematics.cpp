@@ -51,6 +51,13 @@ WheelPose evaluate_geometry(const SuspensionGeometry& g, double z, double u) noe
     d_steer = std::abs(u / g.steering_arm_m) < 0.99
                   ? 1.0 / (g.steering_arm_m * std::sqrt(1.0 - ratio * ratio))
                   : 0.0;
+    if (g.ackermann_cot_shift != 0.0) {
+      // Ackermann: cot(gamma) = cot(gamma_arm) - k, as atan2 without the pole at gamma = 0;
+      // dgamma/dgamma_arm = 1 / ((cos - k sin)^2 + sin^2)
+      const double sn = std::sin(steer), cs = std::cos(steer) - g.ackermann_cot_shift * sn;
+      steer = std::atan2(sn, cs);
+      d_steer /= cs * cs + sn * sn;
+    }
   }
   p.gamma_rad = {g.toe0_rad + g.bump_steer_per_z * z + steer, g.bump_steer_per_z, d_steer};
   return p;

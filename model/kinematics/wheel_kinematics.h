@@ -58,6 +58,9 @@ struct SuspensionGeometry {
   double bump_steer_per_z = 0.02;  ///< dgamma/dz: bump steer [rad/m]
   double steering_arm_m = 0.0;     ///< effective steering arm; 0 = not steered (u ignored)
   double steer_y_per_u = 0.0;      ///< dy/du: wheel-centre shift with steer (scrub radius) [-]
+  /// Ackermann: cot(gamma_steer) = cot(asin(u / arm)) - k; k = ackermann t / (2 L) for the left
+  /// wheel, -k for the right, so that cot(outer) - cot(inner) = ackermann t / L. 0: none [-].
+  double ackermann_cot_shift = 0.0;
 };
 
 /// Fills five tables on the grid from the geometry (z in [z_min, z_max], u in [u_min, u_max]);

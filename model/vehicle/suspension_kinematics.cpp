@@ -101,7 +101,7 @@ SuspensionKinematics::SuspensionKinematics(const VehicleParams& p) {
       // the right wheel's geometry is the mirror image (see AxleKinematicsParams); the steer
       // from the rack, asin(u / arm), keeps its sign
       const Grid2D g = generated_grid(a, p.steering);
-      const kinematics::SuspensionGeometry left = left_wheel_geometry(a, p.steering);
+      kinematics::SuspensionGeometry left = left_wheel_geometry(a, p.steering);
       kinematics::SuspensionGeometry right = left;
       right.track_per_z = -left.track_per_z;
       right.track_per_z2 = -left.track_per_z2;
@@ -109,6 +109,19 @@ SuspensionKinematics::SuspensionKinematics(const VehicleParams& p) {
       right.camber_per_z = -left.camber_per_z;
       right.toe0_rad = -left.toe0_rad;
       right.bump_steer_per_z = -left.bump_steer_per_z;
+      if (a.steered && k.ackermann_percent != 0) {
+        // Ackermann: k = share x track / (2 wheelbase), the wheelbase to the unsteered axles' line
+        double x_sum = 0;
+        int unsteered = 0;
+        for (const AxleParams& o : p.axles) {
+          if (!o.steered) x_sum += o.position_x_m, ++unsteered;
+        }
+        if (unsteered == 0)
+          throw std::invalid_argument(axle + "ackermann_percent needs an unsteered axle");
+        const double wheelbase_m = a.position_x_m - x_sum / unsteered;
+        left.ackermann_cot_shift = 0.01 * k.ackermann_percent * a.track_m / (2 * wheelbase_m);
+        right.ackermann_cot_shift = -left.ackermann_cot_shift;
+      }
       wheels = {kinematics::generate_wheel_kinematics(left, g, method),
                 kinematics::generate_wheel_kinematics(right, g, method)};
     } else {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "model/tire/vertical_tire_force.h"
+#include "model/vehicle/steering/rack_in_the_loop.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -32,6 +33,19 @@ DrivenWheels driven_wheels(const VehicleParams& p) noexcept {
   return d;
 }
 
+namespace {
+/// What moves the rack, as [steering] system says.
+std::unique_ptr<SteeringSystem> make_steering_system(const SteeringParams& p, VehicleState& state,
+                                                     const VehicleInputs& inputs,
+                                                     const VehicleWorkspace& work) {
+  if (p.system == SteeringSystemKind::kSteerByWire)
+    return std::make_unique<SteerByWire>(p, state, inputs, work);
+  if (p.system == SteeringSystemKind::kRackInTheLoop)
+    return std::make_unique<RackInTheLoop>(p, state, inputs);
+  return std::make_unique<ColumnSteering>(p, state, inputs);
+}
+}  // namespace
+
 VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
                              const VehicleInputs& inputs, VehicleWorkspace& work)
     : p_(p),
@@ -42,11 +56,9 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
       framework_(p, state, work),
       shafts_(make_shafts(p, state, work)),
       drivetrain_(p.drivetrain, state, inputs, work, shafts_.get()),
-      steering_system_(std::make_unique<ColumnSteering>(p.steering, state, inputs)),
-      steering_(*steering_system_, state, work),
+      steering_system_(make_steering_system(p.steering, state, inputs, work)),
       wheel_stage_(p, state, inputs, work, shafts_.get(), drivetrain_),
       drivetrain_stepper_(drivetrain_),
-      steering_stepper_(steering_),
       framework_stepper_(framework_, framework_partition(p)),
       sequence_(framework_stepper_) {
   // eq. (8) order: force elements (tires, half shafts), subsystems, framework last
@@ -62,8 +74,16 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
     sequence_.add_stage(*shaft_stepper_);
   }
   if (shafts_) sequence_.add_stage(drivetrain_stepper_);
+  // the steering block: the simple model's 2 DOF, or the enhanced model's system + knuckles
+  if (p.steering.model == SteeringModel::kEnhanced) {
+    enhanced_steering_ = std::make_unique<EnhancedSteering>(p, *steering_system_, state, work);
+    steering_stage_ = std::make_unique<EnhancedSteeringStage>(*enhanced_steering_);
+  } else {
+    simple_steering_ = std::make_unique<SimpleSteering>(*steering_system_, state, work);
+    steering_stage_ = std::make_unique<solver::MechanicalStepper<2>>(*simple_steering_);
+  }
   if (std::any_of(p.axles.begin(), p.axles.end(), [](const AxleParams& a) { return a.steered; }))
-    sequence_.add_stage(steering_stepper_);
+    sequence_.add_stage(*steering_stage_);
   sequence_.add_stage(wheel_stage_);
 }
 

@@ -18,7 +18,9 @@
 #include "model/vehicle/drivetrain.h"
 #include "model/vehicle/half_shafts.h"
 #include "model/vehicle/steering/column_steering.h"
+#include "model/vehicle/steering/enhanced_steering.h"
 #include "model/vehicle/steering/simple_steering.h"
+#include "model/vehicle/steering/steer_by_wire.h"
 #include "model/vehicle/suspension_kinematics.h"
 #include "model/vehicle/vehicle_framework.h"
 #include "model/vehicle/wheel_spin.h"
@@ -51,8 +53,11 @@ class VehicleBlocks {
   [[nodiscard]] const solver::SequentialStepper& sequence() const noexcept { return sequence_; }
   [[nodiscard]] VehicleFramework& framework() noexcept { return framework_; }
   [[nodiscard]] const VehicleFramework& framework() const noexcept { return framework_; }
-  /// The steering block (its coordinates are state.steering_y, steering_z).
-  [[nodiscard]] SimpleSteering& steering() noexcept { return steering_; }
+  /// The simple model's steering block (its coordinates are state.steering_y, steering_z); only
+  /// with [steering] model = "simple".
+  [[nodiscard]] SimpleSteering& steering() noexcept { return *simple_steering_; }
+  /// The enhanced model's block (steering system + knuckles), nullptr with the simple model.
+  [[nodiscard]] EnhancedSteering* enhanced_steering() noexcept { return enhanced_steering_.get(); }
   /// The rack side's system (sec. 2.2): begin_step before the implicit step, report values.
   [[nodiscard]] SteeringSystem& steering_system() noexcept { return *steering_system_; }
   [[nodiscard]] const Drivetrain& drivetrain() const noexcept { return drivetrain_; }
@@ -72,13 +77,14 @@ class VehicleBlocks {
   std::unique_ptr<HalfShafts> shafts_;  ///< none without driven wheels
   Drivetrain drivetrain_;
   std::unique_ptr<SteeringSystem> steering_system_;
-  SimpleSteering steering_;
+  std::unique_ptr<SimpleSteering> simple_steering_;      ///< [steering] model = "simple"
+  std::unique_ptr<EnhancedSteering> enhanced_steering_;  ///< model = "enhanced"
   WheelSpinStage wheel_stage_;
   std::vector<std::unique_ptr<tire::TmeasyForceElement>> tires_;
   std::vector<std::unique_ptr<solver::ForceElementStepper<2>>> tire_steppers_;
   std::unique_ptr<solver::ForceElementStepper<Eigen::Dynamic>> shaft_stepper_;
   solver::MechanicalStepper<2> drivetrain_stepper_;
-  solver::MechanicalStepper<2> steering_stepper_;
+  std::unique_ptr<solver::Stage> steering_stage_;  ///< the stepper of one of the two
   solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization> framework_stepper_;
   solver::SequentialStepper sequence_;
 };

@@ -33,7 +33,10 @@ template <class Step, class Hold, class Ax>
 Equilibrium settle_loop(double h, double speed_mps, int gear_request, Step step, Hold hold,
                         Ax ax) noexcept {
   const bool rolling = speed_mps != 0.0;
-  Signals s{};  // the rest invalid: their fallbacks (no steering input, no assist input)
+  Signals s{};  // the rest invalid: their fallbacks (no hand torque, no assist input)
+  // the wheel held straight: a routed angle's robot would let go of an invalid one
+  // (angle_from_input)
+  s.set(Signal::kSteeringWheelAngleCmd, 0.0);
   s.set(Signal::kGearRequest, rolling ? gear_request : 0);
   s.set(Signal::kBrakePressureFront, rolling ? 0.0 : kHoldingPressurePa);
   s.set(Signal::kBrakePressureRear, rolling ? 0.0 : kHoldingPressurePa);

@@ -16,6 +16,9 @@ struct VehicleInputs {
   std::array<double, kMaxWheels> brake_pressure_pa{};
   double steering_angle_cmd_rad = 0;  ///< steering robot (angle mode)
   double hand_torque_cmd_nm = 0;      ///< driver's hand torque (torque mode)
+  /// Angle mode: the robot has let go (SteeringParams::angle_from_input and the angle command
+  /// not valid): the wheel takes the hand torque, as in torque mode.
+  bool robot_released = false;
   /// The assist input acts (SteeringParams::assist_from_input and the input valid); else the
   /// built-in boost curve.
   bool assist_from_input = false;

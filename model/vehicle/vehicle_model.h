@@ -76,6 +76,10 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   [[nodiscard]] VehicleFramework& framework() noexcept { return blocks_->framework(); }
   [[nodiscard]] const VehicleFramework& framework() const noexcept { return blocks_->framework(); }
   [[nodiscard]] SimpleSteering& steering() noexcept { return blocks_->steering(); }
+  /// The enhanced steering block, nullptr with [steering] model = "simple".
+  [[nodiscard]] EnhancedSteering* enhanced_steering() noexcept {
+    return blocks_->enhanced_steering();
+  }
   /// Vertical tire force of wheel i after the last step [N].
   [[nodiscard]] double wheel_load_n(int i) const noexcept;
   /// At rest at the design position with the engine idling, at (x, y, yaw).

@@ -37,6 +37,10 @@ struct AxleKinematicsParams {
   double camber_per_travel_radpm = 0;  ///< dalpha/dz [rad/m]
   double toe_rad = 0;                  ///< static gamma of the left wheel (+: front to the left)
   double bump_steer_radpm = 0;         ///< dgamma/dz [rad/m]
+  /// Generated steer tables: Ackermann share [%]. 100: the inner wheel steers more so that both
+  /// wheels' axes meet on the line of the unsteered axles (cot(outer) - cot(inner) = track /
+  /// wheelbase); 0: both wheels asin(u / arm), the right the mirror of the left.
+  double ackermann_percent = 0;
   /// Given tables of the left wheel, z-major (values[k * u_count + l]); empty: generated.
   kinematics::Grid2D grid{};
   std::vector<double> x_m, y_m, alpha_rad, beta_rad, gamma_rad;
@@ -95,17 +99,51 @@ struct SteeringParams {
   double rack_friction_speed_mps = 0.002;
   double steering_arm_m = 0.13;          ///< wheel steer = rack travel / arm (small angles)
   double tie_rod_stiffness_npm = 1.5e6;  ///< per side, as seen at the rack
-  double assist_gain = 4.0;              ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
+  /// Enhanced model: the tie rod's damping, rack to knuckle, per side [N s/m].
+  double tie_rod_damping_nspm = 3000;
+  /// Enhanced model: knuckle + wheel inertia about the steering axis, per wheel [kg m^2].
+  double knuckle_inertia_kgm2 = 1.0;
+  double assist_gain = 4.0;  ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
   double assist_max_nm = 12.0;
   /// The overriding gear's fastest overlay at the pinion (its motor's speed limit). A step
   /// command is followed at this rate: in one step it jolts the rack (h omega > 2, boosted torsion
   /// bar on the rack mass); with the old regularised friction into a two-step cycle, with the
   /// stick-predicted one it settles and sticks (RESULTS.md). The limit stays: it is the motor's.
   double overlay_rate_max_radps = 10.0;
+  /// The superposition (planetary) gear's ratio i_ov = overlay motor angle / its angle at the
+  /// pinion: pinion angle = steering-wheel-side angle + motor angle / i_ov. The command stays
+  /// the overlay at the pinion (steering_overlay_angle_cmd_rad); i_ov scales the motor side
+  /// (VehicleState::overlay_motor_rad, the motor's speed = i_ov x the pinion overlay's rate).
+  double overlay_ratio = 1.0;
+  /// The position-controlled overlay motor as a first-order lag with this -3 dB frequency
+  /// (before the rate limit); 0: ideal (the command as the rate limit lets it through).
+  double overlay_bandwidth_hz = 0.0;
+  // ---- steer-by-wire ([steering] system = "steer_by_wire", steering/README.md) ----
+  /// Hand-wheel actuator: the feedback motor's torque limit on the steering wheel.
+  double feedback_torque_max_nm = 10.0;
+  /// Road-wheel actuator: motor + gear on the rack, rack travel per motor angle, the motor's
+  /// (rotor + gear) inertia (reflected on the rack as J / r^2) and its force limit at the rack.
+  double rack_actuator_ratio_m_per_rad = 0.0013;
+  double rack_actuator_inertia_kgm2 = 2e-4;
+  double rack_actuator_force_max_n = 12000.0;
+  /// The motor's and screw's viscous friction at the rack, always acting (powered or not): it
+  /// damps the free rack against the tires' aligning stiffness (without it a rack free of
+  /// commands shimmies at speed: the sedan at 10 m/s with 1500 N s/m) [N s/m].
+  double rack_actuator_damping_nspm = 6000.0;
+  /// Force command: the motor's force follows it as a first-order lag (current loop).
+  double rack_actuator_time_constant_s = 0.005;
+  /// Position command: the actuator's PD position servo, designed for this -3 dB frequency of
+  /// rack travel / command on the rack + reflected motor mass.
+  double rack_actuator_bandwidth_hz = 10.0;
   /// Which assist acts (a routing decision, set by the rig from [routing] assist_torque_nm):
   /// true: the assist_torque_nm input (the ECU's motor torque) while it is valid, the boost
   /// curve while it is not; false: always the built-in boost curve.
   bool assist_from_input = false;
+  /// Angle mode: the steering_wheel_angle_cmd_rad input has a source (a routing decision, set
+  /// by the rig: the driver or CAN feeds it). Then the robot lets go of the wheel while that
+  /// input is not valid (a driver table's `nan` cell: returnability); without a source it holds
+  /// the wheel at 0, as always.
+  bool angle_from_input = false;
 };
 
 /// Engine, torque converter with lock-up, gearbox, open differentials (sec. 2.3).

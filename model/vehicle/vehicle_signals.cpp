@@ -38,6 +38,9 @@ VehicleInputs read_inputs(const VehicleParams& params, int unit, const Signals& 
   read_brake_pressures(params, unit, s, r);
   r.steering_angle_cmd_rad = in(Signal::kSteeringWheelAngleCmd, 0.0);
   r.hand_torque_cmd_nm = in(Signal::kSteeringWheelTorqueCmd, 0.0);
+  r.robot_released = params.steering.angle_from_input &&
+                     !(s.valid[index(Signal::kSteeringWheelAngleCmd)] &&
+                       std::isfinite(s.value[index(Signal::kSteeringWheelAngleCmd)]));
   // the assist input while valid when routed to it (SteeringParams::assist_from_input)
   r.assist_from_input = params.steering.assist_from_input && s.valid[index(Signal::kAssistTorque)];
   r.assist_input_nm = in(Signal::kAssistTorque, 0.0);

@@ -39,7 +39,11 @@ void place_at_rest(VehicleState& s, const VehicleParams& params, double x_m, dou
   s.lockup_fraction = 0;
   s.overlay_rad = 0;
   s.overlay_rate_radps = 0;
+  s.overlay_motor_rad = 0;
+  s.rack_actuator_force_n = 0;
+  s.rack_servo_integral_n = 0;
   s.rack_at_wheel_m.fill(0);
+  s.knuckle_rate_mps.fill(0);
   s.lateral_force_n.fill(0);
   s.acceleration_mps2.setZero();
 }
@@ -51,7 +55,8 @@ bool is_finite(const VehicleState& s) noexcept {
             s.acceleration_mps2.allFinite();
   for (std::size_t k = 0; k < s.spin_radps.size(); ++k) {
     ok = ok && std::isfinite(s.spin_radps[k]) && s.tire_deflection_m[k].allFinite() &&
-         std::isfinite(s.rack_at_wheel_m[k]) && std::isfinite(s.lateral_force_n[k]);
+         std::isfinite(s.rack_at_wheel_m[k]) && std::isfinite(s.knuckle_rate_mps[k]) &&
+         std::isfinite(s.lateral_force_n[k]);
   }
   return ok;
 }

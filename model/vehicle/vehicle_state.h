@@ -43,9 +43,19 @@ struct VehicleState {
   /// command, followed at most at SteeringParams::overlay_rate_max_radps.
   double overlay_rad = 0;
   double overlay_rate_radps = 0;
+  /// The overlay motor's angle behind the superposition gear: overlay_ratio x overlay_rad.
+  double overlay_motor_rad = 0;
+  /// Steer-by-wire: the road-wheel actuator's force on the rack under a force command (its
+  /// first-order lag; 0 without a valid force command) [N].
+  double rack_actuator_force_n = 0;
+  /// Steer-by-wire: the position servo's integral term (with k_p u of the handover) [N].
+  double rack_servo_integral_n = 0;
   // ---- quasi-static memory of the last step ----
   /// Rack travel at the wheel after the tie-rod compliance: where eq. (29) is evaluated next.
+  /// (Enhanced steering: the knuckle's coordinate, its steer as rack-equivalent travel.)
   std::array<double, kMaxWheels> rack_at_wheel_m{};
+  /// Enhanced steering: each knuckle's speed d(rack_at_wheel_m)/dt (0 with the simple model).
+  std::array<double, kMaxWheels> knuckle_rate_mps{};
   /// Tire lateral force: its aligning torque loads the rack in the next step.
   std::array<double, kMaxWheels> lateral_force_n{};
   /// CG acceleration over the last step, body axes (from z(k+1) - z(k)).

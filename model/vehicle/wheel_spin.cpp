@@ -17,11 +17,27 @@ WheelSpinStage::WheelSpinStage(const VehicleParams& p, VehicleState& state,
   }
 }
 
+double wheel_steering_axis_moment_nm(const VehicleParams& p, const VehicleState& state,
+                                     const WheelWork& w, int wheel) noexcept {
+  const auto k = static_cast<std::size_t>(wheel);
+  const AxleParams& axle = p.axles[k / 2];
+  // aligning torque M_z = -(n(s_y) + caster trail) F_y: TMeasy's pneumatic trail n falls with
+  // the lateral slip (Rill 2011, sec. 3.4.3), so the steering goes light near the limit
+  SteeringAxisLoads loads;
+  loads.lat_force_n = state.lateral_force_n[k];
+  loads.load_n = w.load_n;
+  loads.aligning_nm =
+      tire::aligning_torque_nm(axle.tire.tmeasy, w.tire.kinematics, w.load_n, loads.lat_force_n);
+  const int side = (k % 2 == 0) ? 1 : -1;
+  return steering_axis_moment_nm(axle, loads, w.steer_kinematic_rad, side);
+}
+
 void WheelSpinStage::tie_rods() noexcept {
-  // Tie-rod linkage (quasi-static compliance) from the new rack travel; the wheel's steer is
-  // gamma(z, u) of the kinematic tables (SuspensionKinematics, eq. 29).
+  // Tie-rod linkage from the new rack travel; the wheel's steer is gamma(z, u) of the kinematic
+  // tables (SuspensionKinematics, eq. 29) at the rack travel at the wheel.
   const double rack = state_.steering_y(1);
   const SteeringParams& sp = p_.steering;
+  const bool enhanced = sp.model == SteeringModel::kEnhanced;
   double rack_force = 0;
   int first_steered = -1;  // the first steered axle's left wheel (F_S1, F_S2 in the report)
   for (int i = 0; i < work_.wheel_count; ++i) {
@@ -29,19 +45,15 @@ void WheelSpinStage::tie_rods() noexcept {
     WheelWork& w = work_.wheels[k];
     const AxleParams& axle = p_.axles[k / 2];
     if (!axle.steered) continue;
-    // aligning torque M_z = -(n(s_y) + caster trail) F_y: TMeasy's pneumatic trail n falls with
-    // the lateral slip (Rill 2011, sec. 3.4.3), so the steering goes light near the limit; it
-    // loads the rack by virtual work, F_rack = -M_z dgamma/du (eq. 29)
-    SteeringAxisLoads loads;
-    loads.lat_force_n = state_.lateral_force_n[k];
-    loads.load_n = w.load_n;
-    loads.aligning_nm =
-        tire::aligning_torque_nm(axle.tire.tmeasy, w.tire.kinematics, w.load_n, loads.lat_force_n);
-    const int side = (k % 2 == 0) ? 1 : -1;
-    const double axis_moment_nm = steering_axis_moment_nm(axle, loads, w.steer_kinematic_rad, side);
-    w.tie_rod_force_n = -axis_moment_nm * w.steer_d_du;
-    state_.rack_at_wheel_m[k] = rack - w.tie_rod_force_n / sp.tie_rod_stiffness_npm;
-    // gamma of eq. (29) at the new rack travel, linear in u about the step's pose
+    if (!enhanced) {
+      // simple model: quasi-static compliance, the axis moment loads the rack by virtual work,
+      // F_rack = -M dgamma/du (eq. 29)
+      w.tie_rod_force_n = -wheel_steering_axis_moment_nm(p_, state_, w, i) * w.steer_d_du;
+      state_.rack_at_wheel_m[k] = rack - w.tie_rod_force_n / sp.tie_rod_stiffness_npm;
+    }
+    // (enhanced: EnhancedSteering has advanced the knuckle's rack_at_wheel_m and written the
+    // tie rod's spring-damper force)
+    // gamma of eq. (29) at the new rack travel at the wheel, linear in u about the step's pose
     set_wheel_orientation(
         w, w.steer_kinematic_rad + w.steer_d_du * (state_.rack_at_wheel_m[k] - w.steer_at_rack_m),
         w.camber_rad);

@@ -16,6 +16,14 @@
 
 namespace rig::model::vehicle {
 
+/// The moment about a steered wheel's steering axis at the step's start (steering_axis.h) from
+/// its tire's loads: the lateral force of the last step, the load and the aligning torque of the
+/// contact. Both steering models take it: the simple one through the tie rods at the rack, the
+/// enhanced one on the knuckle (EnhancedSteering).
+[[nodiscard]] double wheel_steering_axis_moment_nm(const VehicleParams& p,
+                                                   const VehicleState& state, const WheelWork& w,
+                                                   int wheel) noexcept;
+
 class WheelSpinStage final : public solver::Stage {
  public:
   /// Advances state.spin_radps and state.rack_at_wheel_m; writes the wheels' orientation,

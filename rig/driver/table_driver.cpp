@@ -11,10 +11,11 @@ namespace rig::driver {
 
 namespace {
 
-/// A table value must be finite and within its input's range (model::slot_range): an error at
-/// load, never replaced at run time.
+/// A table value must be finite and within its input's range (model::slot_range), or `nan` (the
+/// input not given there; not for time_s): an error at load, never replaced at run time.
 void check_value(const io::config::StrictTable& t, const toml::node& row, const std::string& name,
                  std::optional<std::size_t> slot, double v) {
+  if (slot && std::isnan(v)) return;
   if (!std::isfinite(v)) throw t.error_at(row, "rows", name + ": value is not finite");
   if (!slot) return;
   const model::InputRange r = model::slot_range(*slot);
@@ -114,8 +115,9 @@ void TableDriver::update(double sim_time_s, model::Signals& signals) noexcept {
     if (!feeds(slot)) continue;
     const double a = params_.values[i * n_cols + c];
     const double b = w > 0.0 ? params_.values[(i + 1) * n_cols + c] : a;
-    signals.value[slot] = a + w * (b - a);
-    signals.valid[slot] = true;
+    const bool given = !std::isnan(a) && !std::isnan(b);  // a nan cell: not given next to it
+    signals.value[slot] = given ? a + w * (b - a) : 0.0;
+    signals.valid[slot] = given;
   }
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 /// @file
 /// An open-loop driver: a time table of named input signals, linearly interpolated in time and
-/// held constant before the first and after the last row.
+/// held constant before the first and after the last row. A cell `nan`: the input is not given
+/// (written invalid) between the rows before and after it; for the steering angle in angle mode
+/// the robot then lets go of the wheel (model::vehicle::SteeringParams::angle_from_input).
 
 #include <cstddef>
 #include <vector>

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Every configuration key the rig reads for [can], the CAN mapping and [lcm] is in the guide.
+"""Every configuration key the rig reads for [can], the CAN mapping, [lcm] and [[kpi]] is in the guide.
 
 Greps the key names out of the sources (the first string argument of each StrictTable reader,
 `error` and `location` call, and the values of each `choice`) and fails on any that the guide
@@ -21,6 +21,7 @@ CHOICE = re.compile(r"\.choice\(\s*\"\w+\"\s*,\s*\"[^\"]*\"\s*,\s*\{([^}]*)\}")
 ROOMS = {
     "io/can": ["can.md", "e2e.md", "restbus.md", "signals.md"],
     "io/lcm": ["lcm.md"],
+    "rig/kpi": ["kpis.md"],
 }
 # sections of the run configuration (rig/config.cpp) -> their page
 SECTIONS = {"can": "can.md", "lcm": "lcm.md", "routing": "routing.md"}
@@ -58,7 +59,7 @@ def missing_keys(root: pathlib.Path) -> list[str]:
             problems.append(f"docs/{page} does not name the section `[{section}]`")
     index = (docs / "README.md").read_text()
     for page in ["can.md", "lcm.md", "routing.md", "signals.md", "restbus.md", "e2e.md",
-                 "worked-example.md"]:
+                 "worked-example.md", "kpis.md"]:
         if f"({page})" not in index:
             problems.append(f"docs/README.md does not link {page}")
     if "docs/README.md" not in (root / "README.md").read_text():

@@ -284,6 +284,32 @@ TEST(TableDriver, InterpolatesLinearlyAndHoldsEnds) {
   EXPECT_DOUBLE_EQ(s[Signal::kBrakePressureFront], -7.0);  // CAN-routed input untouched
 }
 
+// A nan cell: the input is not given (invalid) between the rows next to it (returnability: the
+// steering robot lets go), given again from the next number on.
+TEST(TableDriver, NanCellIsNotGivenBetweenItsNeighbours) {
+  driver::TableDriverParams p;
+  p.columns = {model::index(Signal::kSteeringWheelAngleCmd)};
+  p.times_s = {0.0, 1.0, 1.001, 3.0, 3.5};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  p.values = {0.0, 1.5, nan, nan, 0.2};
+  driver::TableDriver d(p);
+  model::Signals s;
+  const std::size_t slot = model::index(Signal::kSteeringWheelAngleCmd);
+  d.update(0.5, s);
+  EXPECT_TRUE(s.valid[slot]);
+  EXPECT_DOUBLE_EQ(s[Signal::kSteeringWheelAngleCmd], 0.75);
+  d.update(1.0, s);
+  EXPECT_TRUE(s.valid[slot]);
+  EXPECT_DOUBLE_EQ(s[Signal::kSteeringWheelAngleCmd], 1.5);
+  for (const double t : {1.0005, 2.0, 3.0, 3.25}) {
+    d.update(t, s);
+    EXPECT_FALSE(s.valid[slot]) << t;
+  }
+  d.update(3.5, s);
+  EXPECT_TRUE(s.valid[slot]);
+  EXPECT_DOUBLE_EQ(s[Signal::kSteeringWheelAngleCmd], 0.2);
+}
+
 // ---- Configuration ----
 struct ConfigCase {
   std::string text;
@@ -327,7 +353,8 @@ TEST(Config, BadInputGivesFileLine) {
       {"[rig]\n\nabort_after = 3.0\n", "[rig] abort_after: expected an integer", 3},
       {"[rig]\ncpu = 100000\n", "out of range", 2},
       {"[rig]\ncpu = 1023\n", "CPU 1023 does not exist: this machine has", 2},
-      {"[driver]\ncolumns = [\"time_s\", \"throttle_pedal\"]\nrows = [\n[0, 0.5],\n[1, nan]]\n",
+      // (a nan cell is "not given", rig/driver/table_driver.h; an infinity is an error)
+      {"[driver]\ncolumns = [\"time_s\", \"throttle_pedal\"]\nrows = [\n[0, 0.5],\n[1, inf]]\n",
        "[driver] rows: throttle_pedal: value is not finite", 5},
       {"[driver]\ncolumns = [\"time_s\", \"throttle_pedal\"]\nrows = [[0, 1.01]]\n",
        "throttle_pedal: 1.01 is outside [0, 1]", 3},

@@ -68,6 +68,21 @@ TEST(Routing, AssistFromCanIsTheEcusTorque) {
   EXPECT_FALSE(resolve_routing({}, {}).assist_from_input);  // unrouted: the boost curve
 }
 
+// A driver that writes the assist (a table column) plays the ECU: its torque, not the boost curve
+// (parking effort with the assist off and the ignition on); a routed steering angle lets the
+// robot go while it is not valid.
+TEST(Routing, DriverWrittenAssistIsTheInputAndAngleHasASource) {
+  RoutingRequests requests{};
+  requests[idx(Signal::kAssistTorque)] = RouteRequest::kDriver;
+  const Routing r = resolve_routing(requests, set_of({Signal::kAssistTorque}));
+  EXPECT_TRUE(r.assist_from_input);
+  EXPECT_FALSE(r.angle_from_input);  // nobody feeds the angle: the robot holds 0
+  EXPECT_TRUE(resolve_routing({}, set_of({Signal::kSteeringWheelAngleCmd})).angle_from_input);
+  RoutingRequests angle_can{};
+  angle_can[idx(Signal::kSteeringWheelAngleCmd)] = RouteRequest::kCan;
+  EXPECT_TRUE(resolve_routing(angle_can, {}).angle_from_input);
+}
+
 TEST(Routing, ResolvedOnceFromTheConfigurationFile) {
   const RigConfig c =
       load_text("path.toml",

@@ -4,8 +4,11 @@
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <span>
 #include <utility>
+
+#include <poll.h>
 
 namespace rig::io::can::bridge {
 
@@ -100,16 +103,85 @@ void CanBridge::report_out_of_range(const can::mapping::OutOfRangeReport& r) noe
              r.direction, r.message, r.signal, r.received, r.minimum, r.maximum, clamped, count);
 }
 
-void CanBridge::receive(std::int64_t monotonic_ns, model::Signals& inputs) noexcept {
-  if (!started_) start(monotonic_ns);
-  transport_.service(monotonic_ns);
+namespace {
+
+std::uint32_t key(std::uint32_t id, bool extended) noexcept {
+  return extended ? (id | 0x80000000u) : id;
+}
+
+std::int64_t monotonic_now_ns() noexcept {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+}
+
+}  // namespace
+
+bool CanBridge::is_cycle_frame(const std::array<std::uint32_t, 8>& ids, std::size_t count,
+                               std::uint32_t id) noexcept {
+  for (std::size_t i = 0; i < count; ++i)
+    if (ids[i] == id) return true;
+  return false;
+}
+
+void CanBridge::set_cycle_frames(std::int64_t period_ns) noexcept {
+  cycle_rx_count_ = cycle_tx_count_ = 0;
+  const auto cyclic = [&](const can::mapping::MessageBinding& b) {
+    const auto& m = config_.database.messages[b.dbc_message];
+    return m.cycle_time_ms > 0 &&
+           static_cast<std::int64_t>(m.cycle_time_ms) * 1'000'000 <= period_ns;
+  };
+  for (const auto& b : config_.mapping.rx) {
+    if (cycle_rx_count_ < cycle_rx_ids_.size() && cyclic(b))
+      cycle_rx_ids_[cycle_rx_count_++] = config_.database.messages[b.dbc_message].dbc_id();
+  }
+  for (const auto& b : config_.mapping.tx) {
+    if (cycle_tx_count_ < cycle_tx_ids_.size() && cyclic(b))
+      cycle_tx_ids_[cycle_tx_count_++] = config_.database.messages[b.dbc_message].dbc_id();
+  }
+}
+
+void CanBridge::drain(std::int64_t monotonic_ns) noexcept {
   transport_.drain([&](const can::transport::TransportFrame& f) {
     using can::mapping::FrameFormat;
     const FrameFormat format =
         f.remote ? FrameFormat::kRemote : (f.fd ? FrameFormat::kFd : FrameFormat::kClassic);
     rx_.on_frame(f.id, f.extended, format, f.data.data(), f.len, monotonic_ns, rx_signals_,
                  engine_counters_);
+    if (is_cycle_frame(cycle_rx_ids_, cycle_rx_count_, key(f.id, f.extended)))
+      cycle_rx_pending_ = true;
   });
+}
+
+io::CycleFrameWait CanBridge::wait_cycle_frame(std::int64_t loop_ns,
+                                               std::int64_t timeout_ns) noexcept {
+  if (cycle_rx_count_ == 0) return io::CycleFrameWait::kNoCycleFrames;
+  if (!started_) start(loop_ns);
+  const std::int64_t start_ns = monotonic_now_ns();
+  for (;;) {
+    const std::int64_t now_ns = monotonic_now_ns();
+    transport_.service(loop_ns);
+    drain(loop_ns);
+    if (cycle_rx_pending_) return io::CycleFrameWait::kReceived;
+    const std::int64_t left_ns = start_ns + timeout_ns - now_ns;
+    if (left_ns <= 0) return io::CycleFrameWait::kTimeout;
+    pollfd p{transport_.fd(), POLLIN, 0};
+    const int ms = static_cast<int>((left_ns + 999'999) / 1'000'000);
+    if (p.fd < 0) {  // the interface is down: wait for its reopen (service) a little later
+      const timespec ts{0, 1'000'000};
+      nanosleep(&ts, nullptr);
+    } else {
+      (void)poll(&p, 1, ms);
+    }
+  }
+}
+
+void CanBridge::receive(std::int64_t monotonic_ns, model::Signals& inputs) noexcept {
+  if (!started_) start(monotonic_ns);
+  transport_.service(monotonic_ns);
+  drain(monotonic_ns);
+  cycle_rx_ = cycle_rx_pending_;
+  cycle_rx_pending_ = false;
   rx_.check_timeouts(monotonic_ns, rx_signals_, engine_counters_);
   watch_bus_state();
   rx_.take_out_of_range_reports(
@@ -127,8 +199,10 @@ void CanBridge::transmit(std::int64_t monotonic_ns, const signals::CycleView& cy
       monotonic_ns, cycle, std::span<can::mapping::TxFrame>(tx_frames_), engine_counters_);
   tx_.take_out_of_range_reports(
       monotonic_ns, [this](const can::mapping::OutOfRangeReport& r) { report_out_of_range(r); });
+  cycle_tx_ = false;
   for (std::size_t i = 0; i < n; ++i) {
     const can::mapping::TxFrame& in = tx_frames_[i];
+    if (is_cycle_frame(cycle_tx_ids_, cycle_tx_count_, key(in.id, in.extended))) cycle_tx_ = true;
     can::transport::TransportFrame out;
     out.id = in.id;
     out.extended = in.extended;

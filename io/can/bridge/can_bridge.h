@@ -42,6 +42,11 @@ class CanBridge final : public io::CycleIo {
   void transmit(std::int64_t monotonic_ns, const signals::CycleView& cycle) noexcept override;
   void read_counters(IoCounters& counters) const noexcept override;
   bool next_event(io::IoEvent& event) noexcept override;
+  void set_cycle_frames(std::int64_t period_ns) noexcept override;
+  io::CycleFrameWait wait_cycle_frame(std::int64_t loop_ns,
+                                      std::int64_t timeout_ns) noexcept override;
+  [[nodiscard]] bool cycle_frame_received() const noexcept override { return cycle_rx_; }
+  [[nodiscard]] bool cycle_frame_sent() const noexcept override { return cycle_tx_; }
   [[nodiscard]] std::uint64_t events_dropped() const noexcept { return events_dropped_; }
 
   [[nodiscard]] const can::transport::SocketCanTransport& transport() const noexcept {
@@ -54,6 +59,11 @@ class CanBridge final : public io::CycleIo {
                                                        const can::mapping::CanConfig& config,
                                                        bool kernel_filter);
   void start(std::int64_t monotonic_ns) noexcept;
+  /// Drains the transport into the RX engine at `monotonic_ns` (cycle frames noted).
+  void drain(std::int64_t monotonic_ns) noexcept;
+  /// The message's id is one of `ids` (the first `count`).
+  static bool is_cycle_frame(const std::array<std::uint32_t, 8>& ids, std::size_t count,
+                             std::uint32_t id) noexcept;
   void watch_bus_state() noexcept;
   void report_out_of_range(const can::mapping::OutOfRangeReport& r) noexcept;
   /// Queues an event (printf-style detail); counts it as dropped if the queue is full.
@@ -75,6 +85,14 @@ class CanBridge final : public io::CycleIo {
   std::size_t event_count_ = 0;
   std::uint64_t events_dropped_ = 0;
   std::uint64_t drops_reported_ = 0;
+  // cycle frames (set_cycle_frames): their ids, and whether this cycle took one in / sent one
+  std::array<std::uint32_t, 8> cycle_rx_ids_{};
+  std::size_t cycle_rx_count_ = 0;
+  std::array<std::uint32_t, 8> cycle_tx_ids_{};
+  std::size_t cycle_tx_count_ = 0;
+  bool cycle_rx_ = false;
+  bool cycle_rx_pending_ = false;  // taken in by wait_cycle_frame(), reported by receive()
+  bool cycle_tx_ = false;
 };
 
 }  // namespace rig::io::can::bridge

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace rig::model::vehicle {
 
@@ -10,12 +11,18 @@ ColumnSteering::ColumnSteering(const SteeringParams& p, VehicleState& state,
     : p_(p), state_(state), inputs_(inputs) {}
 
 void ColumnSteering::begin_step(double h) noexcept {
-  // the overriding gear follows its command at most at its motor's speed
+  // The overriding gear: the command is the overlay at the pinion; its position-controlled motor
+  // (a first-order lag at overlay_bandwidth_hz, exact over the step; none at 0) moves it, at
+  // most at its speed limit.
+  double want = inputs_.overlay_angle_rad - state_.overlay_rad;
+  if (p_.overlay_bandwidth_hz > 0)
+    want *= -std::expm1(-2 * std::numbers::pi * p_.overlay_bandwidth_hz * h);
   const double max_step = p_.overlay_rate_max_radps * h;
-  const double move =
-      std::clamp(inputs_.overlay_angle_rad - state_.overlay_rad, -max_step, max_step);
+  const double move = std::clamp(want, -max_step, max_step);
   state_.overlay_rad += move;
   state_.overlay_rate_radps = move / h;
+  // the superposition gear: pinion angle = wheel-side angle + motor angle / i_ov
+  state_.overlay_motor_rad = p_.overlay_ratio * state_.overlay_rad;
 }
 
 void ColumnSteering::mass_matrix(const Vector& y, Matrix& m) const noexcept {
@@ -44,7 +51,7 @@ double ColumnSteering::assist_torque_nm(const Vector& y, const Vector& z) const 
 void ColumnSteering::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
   const double tb = torsion_bar_torque_nm(y, z);
   double hand = inputs_.hand_torque_cmd_nm;
-  if (!p_.torque_input) {
+  if (!p_.torque_input && !inputs_.robot_released) {
     hand = p_.robot_stiffness_nmpr * (inputs_.steering_angle_cmd_rad - y(0)) -
            p_.robot_damping_nmspr * z(0);
   }
@@ -69,8 +76,9 @@ void ColumnSteering::force_jacobians(const Vector& y, const Vector& z, Matrix& d
     const double t = std::tanh(p_.assist_gain * torsion_bar_torque_nm(y, z) / p_.assist_max_nm);
     dassist = p_.assist_gain * (1 - t * t);
   }
-  const double robot_c = p_.torque_input ? 0.0 : p_.robot_stiffness_nmpr;
-  const double robot_d = p_.torque_input ? 0.0 : p_.robot_damping_nmspr;
+  const bool robot = !p_.torque_input && !inputs_.robot_released;
+  const double robot_c = robot ? p_.robot_stiffness_nmpr : 0.0;
+  const double robot_d = robot ? p_.robot_damping_nmspr : 0.0;
   const double g = (1 + dassist) / i;
   dq_dy << -robot_c - c, c / i, g * c, -g * c / i;
   dq_dz << -robot_d - d - p_.column_damping_nmspr, d / i, g * d, -g * d / i;

@@ -6,9 +6,10 @@
 /// or slides at its capacity, SteeringSystem::dry_friction), assist
 /// torque on the pinion (input signal or built-in boost curve). The wheel is driven by hand
 /// torque or, in angle mode, by a stiff position servo (a steering robot). The optional
-/// overriding gear in its simple form: an overlay angle added at the pinion (the torsion bar's
-/// lower end at u / i_SB - overlay), so with the hand wheel held the rack moves by overlay x
-/// i_SB; the overlay follows its command at most at overlay_rate_max_radps (VehicleState).
+/// overriding gear (active front steering): a superposition gear adds its motor's angle / i_ov
+/// at the pinion (the torsion bar's lower end at u / i_SB - overlay), so with the hand wheel
+/// held the rack moves by overlay x i_SB; the command is the overlay at the pinion, the motor
+/// follows it as a first-order lag (overlay_bandwidth_hz) at most at overlay_rate_max_radps.
 /// Ignition off: no assist (neither the input nor the boost curve).
 
 #include "model/vehicle/steering/steering_system.h"

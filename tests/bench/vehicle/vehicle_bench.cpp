@@ -13,8 +13,12 @@ namespace {
 using rig::model::Signal;
 using rig::model::Signals;
 
-void step_bench(benchmark::State& state, const char* file) {
-  rig::model::vehicle::VehicleModel m(rig::io::config::load_vehicle_file(file), 1e-3);
+void step_bench(
+    benchmark::State& state, const char* file,
+    rig::model::vehicle::SteeringModel steering = rig::model::vehicle::SteeringModel::kSimple) {
+  rig::model::vehicle::VehicleParams p = rig::io::config::load_vehicle_file(file);
+  if (steering != rig::model::vehicle::SteeringModel::kSimple) p.steering.model = steering;
+  rig::model::vehicle::VehicleModel m(p, 1e-3);
   Signals s = rig::test::cornering_inputs();
   m.set_forward_speed(15);
   for (int k = 0; k < 2000; ++k) (void)m.step(s);  // into a steady turn
@@ -25,6 +29,11 @@ void step_bench(benchmark::State& state, const char* file) {
 
 void BM_SedanStep(benchmark::State& state) {
   step_bench(state, RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+}
+/// The same step with the enhanced steering (issue 15: at most 1.3x the simple model's step).
+void BM_SedanStepEnhancedSteering(benchmark::State& state) {
+  step_bench(state, RIG_SOURCE_DIR "/config/vehicles/sedan.toml",
+             rig::model::vehicle::SteeringModel::kEnhanced);
 }
 void BM_TruckStep(benchmark::State& state) {
   step_bench(state, RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml");
@@ -48,6 +57,7 @@ void BM_Sedan20sOffline(benchmark::State& state) {
 }
 
 BENCHMARK(BM_SedanStep);
+BENCHMARK(BM_SedanStepEnhancedSteering);
 BENCHMARK(BM_TruckStep);
 BENCHMARK(BM_Sedan20sOffline)->Unit(benchmark::kMillisecond);
 

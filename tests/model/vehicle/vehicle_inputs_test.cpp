@@ -159,6 +159,25 @@ TEST(SteeringOverlay, MovesTheRackByOverlayTimesRackRatioWithTheWheelHeld) {
   }
 }
 
+// ---- steering robot release (returnability) ----
+
+// With the angle routed (angle_from_input), the robot lets go while the angle is not valid (or
+// not finite); not routed, it holds the wheel at 0 as before (the release's dynamics:
+// config/maneuvers/returnability.toml, tests/integration/maneuver_test.py).
+TEST(SteeringRobot, LetsGoOfTheWheelWhileARoutedAngleIsNotValid) {
+  VehicleParams p = sedan();
+  Signals s = test::all_driver_inputs();
+  const std::size_t angle = index(Signal::kSteeringWheelAngleCmd);
+  s.valid[angle] = false;
+  EXPECT_FALSE(read_inputs(p, 0, s).robot_released);  // not routed: holds at 0
+  p.steering.angle_from_input = true;
+  EXPECT_TRUE(read_inputs(p, 0, s).robot_released);
+  set_slot(s, angle, 0.3);
+  EXPECT_FALSE(read_inputs(p, 0, s).robot_released);
+  s.value[angle] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(read_inputs(p, 0, s).robot_released);
+}
+
 // ---- ignition ----
 
 // Ignition off at 20 m/s with the throttle pressed and a steady steering angle: the engine only

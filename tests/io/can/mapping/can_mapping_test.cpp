@@ -41,6 +41,20 @@ TEST(CanMapping, ExampleMappingLoads) {
   EXPECT_EQ(c.mapping.tx[2].signals[0].invalid_raw, 0xFFFFu);  // wheel speeds: SNA
 }
 
+// The steer-by-wire bench (issue 15): the ECU's feedback torque and rack commands come in,
+// each its own message (the one the ECU does not send times out: invalid, no actuator force).
+TEST(CanMapping, SteerByWireMappingLoads) {
+  const can::mapping::CanConfig c =
+      can::mapping::load_can_config(kConfigDir + "/steer-by-wire-bench.toml");
+  ASSERT_EQ(c.mapping.rx.size(), 3u);
+  ASSERT_EQ(c.mapping.tx.size(), 3u);
+  EXPECT_EQ(c.mapping.rx[0].signals[0].model->slot,
+            model::index(model::Signal::kSteeringWheelFeedbackTorqueCmd));
+  EXPECT_EQ(c.mapping.rx[1].signals[0].model->slot, model::index(model::Signal::kRackForceCmd));
+  EXPECT_EQ(c.mapping.rx[2].signals[0].model->slot, model::index(model::Signal::kRackPositionCmd));
+  for (const auto& rx : c.mapping.rx) EXPECT_EQ(rx.timeout_ns, 30'000'000);  // 3 x 10 ms
+}
+
 class CanMappingErrors : public ::testing::Test {
  protected:
   /// Writes `body` after a `dbc = ...` line and returns the config::ConfigError text of loading it.
