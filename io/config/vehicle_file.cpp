@@ -97,6 +97,12 @@ TireParams read_tire(StrictTable t) {
   p.low_speed_damping_ratio = t.number_in("low_speed_damping_ratio", 1.0, 0, 10);
   p.low_speed_damping_speed_mps = t.number_in("low_speed_damping_speed_mps", 1.0, 0.01, 10);
   read_trail(t, p.trail);
+  // the bore torque (model/tire/tmeasy_bore.h); its stiffness is needed once it is on
+  p.bore.enabled = t.boolean("bore_torque", false);
+  p.bore.stiffness_nmprad = p.bore.enabled ? t.number_in("bore_stiffness_nmprad", 1, 1e7)
+                                           : t.number_in("bore_stiffness_nmprad", 0, 0, 1e7);
+  p.bore.damping_nmsprad = t.number_in("bore_damping_nmsprad", 0, 0, 1e5);
+  p.bore.contact_width_m = t.number_in("contact_width_m", 0.2, 0.01, 2);
   t.finish();
   return tire;
 }
@@ -147,6 +153,28 @@ model::vehicle::AxleKinematicsParams read_kinematics(StrictTable t) {
   return k;
 }
 
+/// The steering-axis geometry of an axle (AxleParams; model/vehicle/steering/README.md). The
+/// spindle offset follows from the other keys; a given spindle_offset_m is checked against it.
+void read_steering_axis(StrictTable& t, AxleParams& a) {
+  a.caster_angle_rad = t.number_in("caster_angle_rad", 0, -0.3, 0.5);
+  a.kingpin_inclination_rad = t.number_in("kingpin_inclination_rad", 0, -0.1, 0.4);
+  a.scrub_radius_m = t.number_in("scrub_radius_m", 0, -0.1, 0.1);
+  const double r0 = a.tire.tmeasy.radius_unloaded_m;
+  a.spindle_offset_m = (a.scrub_radius_m + r0 * std::tan(a.kingpin_inclination_rad)) *
+                       std::cos(a.kingpin_inclination_rad);
+  if (t.has("spindle_offset_m")) {
+    const double given = t.number_in("spindle_offset_m", -0.3, 0.3);
+    if (std::abs(given - a.spindle_offset_m) > 0.005)
+      throw t.error("spindle_offset_m",
+                    "spindle_offset_m = " + std::to_string(given) +
+                        " m disagrees with the axis: (scrub_radius_m + r_0 "
+                        "tan(kingpin_inclination_rad)) cos(kingpin_inclination_rad) = " +
+                        std::to_string(a.spindle_offset_m) +
+                        " m (give it within 5 mm or leave "
+                        "it out)");
+  }
+}
+
 AxleParams read_axle(StrictTable t, const std::map<std::string, TireParams>& tires) {
   AxleParams a;
   a.position_x_m = t.number_in("position_x_m", -20, 20);
@@ -169,6 +197,7 @@ AxleParams read_axle(StrictTable t, const std::map<std::string, TireParams>& tir
   if (it == tires.end()) throw t.error("tire", "no [tires." + tire + "] table");
   a.tire = it->second;
   if (auto k = t.optional_table("kinematics")) a.kinematics = read_kinematics(*k);
+  read_steering_axis(t, a);
   t.finish();
   return a;
 }

@@ -32,6 +32,16 @@ struct TmeasyTrail {
   double end_slip_double = 0.60;             ///< s_yE at 2 F_zN [-]
 };
 
+/// TMeasy's bore torque (Rill, Road Vehicle Dynamics, 2012, sec. 3.3.6; method.md ref. [12]):
+/// the patch's torsional deflection about the contact normal with a stiffness and a damping,
+/// limited by M_B,max = (2/3) R_P mu F_z, R_P = (L/2 + B/2)/2 (tmeasy_bore.h). Off by default.
+struct TmeasyBore {
+  bool enabled = false;          ///< bore_torque
+  double stiffness_nmprad = 0;   ///< c_B [N m/rad]
+  double damping_nmsprad = 0;    ///< d_B [N m s/rad]
+  double contact_width_m = 0.2;  ///< B, the patch width [m]
+};
+
 /// All TMeasy parameters of one tire.
 struct TmeasyParams {
   double nominal_load_n = 3500.0;    ///< F_zN [N]
@@ -57,6 +67,7 @@ struct TmeasyParams {
   /// low-speed correction of the transient contact model). 0 switches it off.
   double low_speed_damping_ratio = 1.0;      ///< zeta_low [-]
   double low_speed_damping_speed_mps = 1.0;  ///< v_low [m/s]
+  TmeasyBore bore;                           ///< bore torque (tmeasy_bore.h)
 };
 
 /// The issue's default 215/55 R18 passenger tire (public TMeasy data set): exactly the issue-3

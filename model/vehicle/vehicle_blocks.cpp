@@ -103,8 +103,8 @@ void VehicleBlocks::update_contacts() noexcept {
     tire::TireContact& tc = w.tire;
     tc.kinematics = {c.vx_mps, c.vy_mps, state_.spin_radps[k],
                      tire::dynamic_rolling_radius(t.radius_unloaded_m, c.penetration_m)};
-    tc.characteristic =
-        tire::characteristic_at(t, w.load_n, framework_.road().friction(i % 2 == 1));
+    w.road_friction = framework_.road().friction(i % 2 == 1);
+    tc.characteristic = tire::characteristic_at(t, w.load_n, w.road_friction);
     const tire::TireSlip slip =
         tire::slip_of(tc.characteristic, tc.kinematics, t.velocity_floor_mps);
     tc.f_per_slip = slip.f_per_slip;

@@ -111,6 +111,8 @@ void VehicleModel::finish_step(double h, ConstVectorRef extra_rate) noexcept {
   for (int i = 0; i < work_.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
     state_.lateral_force_n[k] = work_.wheels[k].out.force_y_n;
+    state_.long_force_n[k] = work_.wheels[k].out.force_x_n;
+    state_.shaft_torque_nm[k] = work_.wheels[k].shaft_torque_nm;
   }
 }
 

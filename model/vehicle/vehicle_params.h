@@ -66,6 +66,17 @@ struct AxleParams {
   /// Steered axle: the kingpin axis meets the ground this far ahead of the contact centre. The
   /// aligning torque is -(n(s_y) + caster trail) F_y, n the tire's pneumatic trail (model/tire).
   double caster_trail_m = 0;
+  /// Steered axle: the steering axis' tilt (model/vehicle/steering/README.md "steering axis").
+  /// Caster angle: its top tilted rearwards; kingpin inclination: its top tilted inwards; scrub
+  /// radius: the contact centre outboard of the axis' ground point (positive scrub). With them
+  /// the vertical load gives the jacking torque and F_x its moments (steering_axis.h).
+  double caster_angle_rad = 0;
+  double kingpin_inclination_rad = 0;
+  double scrub_radius_m = 0;
+  /// The wheel centre's lateral offset from the axis (kingpin offset at wheel centre), derived
+  /// from the above: (r_s + r_0 tan(KPI)) cos(KPI) (Reimpell, The Automotive Chassis, ch. 3);
+  /// the vehicle file's spindle_offset_m, if given, must agree with it.
+  double spindle_offset_m = 0;
   TireParams tire{};
   AxleKinematicsParams kinematics{};
 };

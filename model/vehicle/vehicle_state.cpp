@@ -45,6 +45,10 @@ void place_at_rest(VehicleState& s, const VehicleParams& params, double x_m, dou
   s.rack_at_wheel_m.fill(0);
   s.knuckle_rate_mps.fill(0);
   s.lateral_force_n.fill(0);
+  s.long_force_n.fill(0);
+  s.shaft_torque_nm.fill(0);
+  s.bore_twist_rad.fill(0);
+  s.bore_torque_nm.fill(0);
   s.acceleration_mps2.setZero();
 }
 
@@ -56,7 +60,9 @@ bool is_finite(const VehicleState& s) noexcept {
   for (std::size_t k = 0; k < s.spin_radps.size(); ++k) {
     ok = ok && std::isfinite(s.spin_radps[k]) && s.tire_deflection_m[k].allFinite() &&
          std::isfinite(s.rack_at_wheel_m[k]) && std::isfinite(s.knuckle_rate_mps[k]) &&
-         std::isfinite(s.lateral_force_n[k]);
+         std::isfinite(s.lateral_force_n[k]) && std::isfinite(s.long_force_n[k]) &&
+         std::isfinite(s.shaft_torque_nm[k]) && std::isfinite(s.bore_twist_rad[k]) &&
+         std::isfinite(s.bore_torque_nm[k]);
   }
   return ok;
 }

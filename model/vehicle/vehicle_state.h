@@ -58,6 +58,14 @@ struct VehicleState {
   std::array<double, kMaxWheels> knuckle_rate_mps{};
   /// Tire lateral force: its aligning torque loads the rack in the next step.
   std::array<double, kMaxWheels> lateral_force_n{};
+  /// Tire longitudinal force and half-shaft torque: their moments about the steering axis load
+  /// the rack in the next step (steering_axis.h).
+  std::array<double, kMaxWheels> long_force_n{};
+  std::array<double, kMaxWheels> shaft_torque_nm{};
+  /// The contact patch's torsional deflection phi of the bore torque (model/tire/tmeasy_bore.h).
+  std::array<double, kMaxWheels> bore_twist_rad{};
+  /// Its torque at the end of the last step [N m] (the enhanced model takes it at the step's start).
+  std::array<double, kMaxWheels> bore_torque_nm{};
   /// CG acceleration over the last step, body axes (from z(k+1) - z(k)).
   Vec3 acceleration_mps2 = Vec3::Zero();
 };

@@ -40,6 +40,7 @@ struct WheelWork {
   Vec3 spin_axis = Vec3::UnitY();  ///< Rz(steer) Rx(camber) e_y, body axes
   // ---- the tire at the start of the step (VehicleModel's contacts) ----
   double load_n = 0;         ///< F_z at y_V(k), z_V(k)
+  double road_friction = 1;  ///< mu of the road under the wheel (the bore torque's limit)
   tire::TireContact tire{};  ///< characteristic at F_z and mu, kinematics, f
   // ---- subsystems within the step (WheelSpinStage) ----
   double tie_rod_force_n = 0;  ///< resisting rack force from this wheel's aligning torque
@@ -73,6 +74,10 @@ struct VehicleWorkspace {
   double carrier_speed_radps = 0;   ///< differential input speed in wheel units, newest
   // steering (the wheel-spin stage for the rack force; finish_step for the rest)
   double rack_force_n = 0;  ///< sum of the tie-rod forces on the rack
+  /// d(rack force)/d(rack travel) of the sticking bore torques through the tie rods (the
+  /// simple model's implicit partial of its lagged rack force) [N/m]
+  double rack_bore_stiffness_npm = 0;
+  double rack_force_at_m = 0;  ///< the rack travel where rack_force_n was evaluated
   /// The first steered axle's left and right tie-rod forces on the rack (ModelReport).
   double tie_rod_force_left_n = 0;
   double tie_rod_force_right_n = 0;

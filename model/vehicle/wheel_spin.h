@@ -33,7 +33,7 @@ class WheelSpinStage final : public solver::Stage {
   void advance(double h) noexcept override;
 
  private:
-  void tie_rods() noexcept;
+  void tie_rods(double h) noexcept;
 
   const VehicleParams& p_;
   VehicleState& state_;

@@ -25,10 +25,16 @@ class SimpleSteering final : public solver::MechanicalBlock<2> {
   void applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept override {
     system_.applied_forces(y, z, q);
     q(1) -= work_.rack_force_n;
+    // the sticking bore torques' stiff part of it, linearized about where it was evaluated
+    // (their twist follows the rack within the step), so the coupling is implicit
+    if (work_.rack_bore_stiffness_npm != 0.0)
+      q(1) -= work_.rack_bore_stiffness_npm * (y(1) - work_.rack_force_at_m);
   }
   bool force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
                        Matrix& dq_dz) const noexcept override {
     system_.force_jacobians(y, z, dq_dy, dq_dz);
+    // the sticking bore torques' partial (applied_forces)
+    dq_dy(1, 1) -= work_.rack_bore_stiffness_npm;
     return true;
   }
   /// The system's friction on the wheel angle and the rack travel (stick-predicted).

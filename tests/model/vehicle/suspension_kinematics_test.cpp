@@ -143,6 +143,10 @@ TEST(SuspensionKinematics, FrontToeGivesOpposedCorneringForces) {
   VehicleParams p = sedan();
   const double toe = 0.004;  // rad, front to the outside on both wheels (toe-out)
   p.axles[0].kinematics.toe_rad = toe;
+  // the hand formula is the trails' alone: without the steering-axis geometry and bore torque
+  // (issue 15; their straight-ahead moments, opposite left/right, add toe compliance)
+  p.axles[0].caster_angle_rad = p.axles[0].kingpin_inclination_rad = p.axles[0].scrub_radius_m = 0;
+  p.axles[0].tire.tmeasy.bore.enabled = false;
   VehicleModel m(p, 1e-3);
   m.set_forward_speed(20);
   Signals s = driver_inputs();

@@ -114,7 +114,10 @@ struct OverlayResult {
 // Hand wheel held at 0 by the steering robot (angle mode), a 0.1 rad overlay step at t = 0.5 s
 // (the gear follows it at its rate limit), 3 s later: the rack at steady state.
 OverlayResult hold_wheel_with_overlay(double speed_mps) {
-  const VehicleParams p = sedan();
+  VehicleParams p = sedan();
+  // the gear's kinematics alone: without the bore torque's resistance at stand-still (issue 15),
+  // which twists the torsion bar by a further F_rack i_SB / c
+  for (AxleParams& a : p.axles) a.tire.tmeasy.bore.enabled = false;
   VehicleModel m(p, 1e-3);
   const VehicleModel::Equilibrium e = m.settle(speed_mps, speed_mps > 0 ? 99 : 0);
   Signals s = test::all_driver_inputs();
