@@ -224,7 +224,10 @@ std::optional<double> read_steering(StrictTable t, model::vehicle::SteeringParam
   s.rack_per_pinion_m_per_rad = t.number_in("rack_per_pinion_m_per_rad", 1e-4, 1);
   s.rack_mass_kg = t.number_in("rack_mass_kg", 0.1, 1000);
   s.rack_friction_n = t.number_in("rack_friction_n", 0, 1e5);
+  // deprecated (the regularised friction's scale), accepted and ignored: friction is
+  // stick-predicted now
   s.rack_friction_speed_mps = t.number_in("rack_friction_speed_mps", 0.002, 1e-5, 1);
+  s.column_friction_nm = t.number_in("column_friction_nm", 0, 0, 1e3);
   s.steering_arm_m = t.number_in("steering_arm_m", 0.01, 2);
   s.tie_rod_stiffness_npm = t.number_in("tie_rod_stiffness_npm", 1e3, 1e10);
   // the enhanced model's knuckles (model/vehicle/steering/README.md); read for both models

@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include "model/solver/dry_friction.h"
+
 namespace rig::model::solver {
 
 /// Interface of a mechanical block with N coordinates and N speeds (N may be Eigen::Dynamic;
@@ -50,6 +52,14 @@ class MechanicalBlock {
     (void)dq_dy;
     (void)dq_dz;
     return false;
+  }
+  /// The block's dry-friction contacts for this step (dry_friction.h), at y(k), z(k): the
+  /// stepper solves them stick-predicted instead of a regularised slope in q. Default: none.
+  virtual void dry_friction(const Vector& y, const Vector& z,
+                            FrictionSet<N>& contacts) const noexcept {
+    (void)y;
+    (void)z;
+    contacts.clear();
   }
 };
 

@@ -4,9 +4,12 @@
 ///   M_VI = M - h dq/dz - h^2 dq/dy K^-1                       (modified mass matrix)
 ///   z(k+1) = z(k) + h M_VI^-1 q(y(k) + h K^-1 z(k), z(k), ...)
 ///   y(k+1) = y(k) + h K^-1 z(k+1)
+/// with the block's dry friction (dry_friction.h) stick-predicted: z(k+1) also gets
+/// h M_VI^-1 J^T lambda, lambda the friction forces that stop or oppose the contacts' end speeds.
 /// M and K^-1 are frozen at y(k); q and its Jacobians are taken at the predicted coordinates
 /// (or at y(k), see ForceEvaluation).
 
+#include <array>
 #include <type_traits>
 
 #include <Eigen/Core>
@@ -61,7 +64,10 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
         q2_(n_),
         leading_rhs_(n_),
         leading_sol_(n_),
+        minv_jt_(n_, FrictionSet<N>::kMaxContacts),
+        friction_(n_),
         factorization_(init) {
+    minv_jt_.setZero();
     k_inv_.setIdentity();
     m_.setZero();
     dq_dy_.setZero();
@@ -109,6 +115,7 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
     m_vi_.noalias() -= (h * h) * dq_dy_ * k_inv_;
     factorization_.compute(m_vi_);
     factorization_.solve(q_, z_u_);
+    resolve_friction(h);
   }
 
   [[nodiscard]] ConstVectorRef coordinates() const noexcept override {
@@ -144,12 +151,14 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
   void finish_step(double h, ConstVectorRef extra_rate) noexcept override {
     Vector& z = block_.speeds();
     z += h * (z_u_ + extra_rate);
+    hold_stuck(z);  // a constraint's rate does not unstick (the friction saw only the block)
     block_.coordinates().noalias() += h * k_inv_ * z;  // eq. (8): y(k+1) = y(k) + h K^-1 z(k+1)
   }
   /// finish_step without constraint forces.
   void finish_step(double h) noexcept {
     Vector& z = block_.speeds();
     z += h * z_u_;
+    hold_stuck(z);
     block_.coordinates().noalias() += h * k_inv_ * z;
   }
 
@@ -159,15 +168,63 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
   [[nodiscard]] const Matrix& force_jacobian_z() const noexcept { return dq_dz_; }
   [[nodiscard]] const Vector& applied_forces() const noexcept { return q_; }
   [[nodiscard]] const Vector& predicted_coordinates() const noexcept { return y_pred_; }
+  /// The block's friction contacts of this step and their forces and states.
+  [[nodiscard]] const FrictionSet<N>& friction_contacts() const noexcept { return friction_; }
+  [[nodiscard]] const FrictionSolution& friction_solution() const noexcept {
+    return friction_solution_;
+  }
 
  private:
+  static constexpr int kMaxContacts = FrictionSet<N>::kMaxContacts;
+
+  /// The friction forces of the step (dry_friction.h): W = J M_VI^-1 J^T and the free end
+  /// speeds b = J (z(k) + h z_u); z_u += M_VI^-1 J^T lambda.
+  void resolve_friction(double h) noexcept {
+    friction_.clear();
+    block_.dry_friction(block_.coordinates(), block_.speeds(), friction_);
+    stuck_count_ = 0;
+    friction_solution_ = FrictionSolution{};
+    const int m = friction_.size();
+    if (m == 0) return;
+    const auto& j = friction_.directions();
+    for (int i = 0; i < m; ++i) {
+      work_z_ = j.col(i);
+      factorization_.solve(work_z_, work_y_);
+      minv_jt_.col(i) = work_y_;
+    }
+    work_z_ = block_.speeds() + h * z_u_;
+    std::array<std::array<double, kMaxContacts>, kMaxContacts> w{};
+    std::array<double, kMaxContacts> b{}, c{};
+    for (int i = 0; i < m; ++i) {
+      b[i] = j.col(i).dot(work_z_);
+      c[i] = friction_.capacity(i);
+      for (int k = 0; k < m; ++k) w[i][k] = j.col(i).dot(minv_jt_.col(k));
+    }
+    friction_solution_ = solve_friction(w, b, c, m, h);
+    for (int i = 0; i < m; ++i) {
+      z_u_.noalias() += friction_solution_.force[i] * minv_jt_.col(i);
+      // a stuck coordinate's speed is exactly 0 (not a rounding residue): it holds its position
+      if (friction_solution_.exact && friction_solution_.state[i] == FrictionState::kStick &&
+          friction_.axis(i) >= 0)
+        stuck_[stuck_count_++] = friction_.axis(i);
+    }
+  }
+  void hold_stuck(Vector& z) const noexcept {
+    for (int i = 0; i < stuck_count_; ++i) z(stuck_[i]) = 0.0;
+  }
+
   MechanicalBlock<N>& block_;
   JacobianMode mode_ = JacobianMode::kAnalyticOrFiniteDifference;
   ForceEvaluation evaluation_ = ForceEvaluation::kPredictedCoordinates;
   Eigen::Index n_ = 0;
   Matrix k_inv_, m_, dq_dy_, dq_dz_, m_vi_;
   Vector y_pred_, q_, z_u_, work_y_, work_z_, q1_, q2_;
-  mutable Vector leading_rhs_, leading_sol_;  ///< solve_mass_leading without a body solve
+  mutable Vector leading_rhs_, leading_sol_;        ///< solve_mass_leading without a body solve
+  Eigen::Matrix<double, N, kMaxContacts> minv_jt_;  ///< M_VI^-1 J^T of the friction contacts
+  FrictionSet<N> friction_;
+  FrictionSolution friction_solution_;
+  std::array<Eigen::Index, kMaxContacts> stuck_{};
+  int stuck_count_ = 0;
   Factorization factorization_;
 };
 

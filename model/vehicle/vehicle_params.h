@@ -104,7 +104,9 @@ struct SteeringParams {
   double torsion_bar_damping_nmspr = 0.3;
   double rack_per_pinion_m_per_rad = 0.0081;  ///< steering box ratio i_SB
   double rack_mass_kg = 2.0;                  ///< rack + pinion + motor reflected
-  double rack_friction_n = 150;               ///< dry friction, regularized implicitly
+  double rack_friction_n = 150;   ///< rack dry friction (stick-predicted, solver/dry_friction.h)
+  double column_friction_nm = 0;  ///< column bearings' dry friction on the wheel angle
+  /// Deprecated, ignored: the regularised friction's speed scale (configs still load with it).
   double rack_friction_speed_mps = 0.002;
   double steering_arm_m = 0.13;          ///< wheel steer = rack travel / arm (small angles)
   double tie_rod_stiffness_npm = 1.5e6;  ///< per side, as seen at the rack
@@ -115,9 +117,9 @@ struct SteeringParams {
   double assist_gain = 4.0;  ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
   double assist_max_nm = 12.0;
   /// The overriding gear's fastest overlay at the pinion (its motor's speed limit). A step
-  /// command is followed at this rate: taken in one step it would jolt the rack (h omega > 2
-  /// for the boosted torsion bar on the rack mass) into a two-step cycle of the linearized
-  /// implicit Euler that the saturated boost curve and rack friction cannot damp.
+  /// command is followed at this rate: in one step it jolts the rack (h omega > 2, boosted torsion
+  /// bar on the rack mass); with the old regularised friction into a two-step cycle, with the
+  /// stick-predicted one it settles and sticks (RESULTS.md). The limit stays: it is the motor's.
   double overlay_rate_max_radps = 10.0;
   /// The superposition (planetary) gear's ratio i_ov = overlay motor angle / its angle at the
   /// pinion: pinion angle = steering-wheel-side angle + motor angle / i_ov. The command stays

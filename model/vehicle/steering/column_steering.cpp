@@ -55,9 +55,14 @@ void ColumnSteering::applied_forces(const Vector& y, const Vector& z, Vector& q)
     hand = p_.robot_stiffness_nmpr * (inputs_.steering_angle_cmd_rad - y(0)) -
            p_.robot_damping_nmspr * z(0);
   }
-  const double friction = p_.rack_friction_n * std::tanh(z(1) / p_.rack_friction_speed_mps);
   q(0) = hand - tb - p_.column_damping_nmspr * z(0);
-  q(1) = (tb + assist_for_torsion_bar_nm(tb)) / p_.rack_per_pinion_m_per_rad - friction;
+  q(1) = (tb + assist_for_torsion_bar_nm(tb)) / p_.rack_per_pinion_m_per_rad;
+}
+
+SteeringFriction ColumnSteering::dry_friction(const Vector& y, const Vector& z) const noexcept {
+  (void)y;
+  (void)z;
+  return {.column_nm = p_.column_friction_nm, .rack_n = p_.rack_friction_n};
 }
 
 void ColumnSteering::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
@@ -74,11 +79,9 @@ void ColumnSteering::force_jacobians(const Vector& y, const Vector& z, Matrix& d
   const bool robot = !p_.torque_input && !inputs_.robot_released;
   const double robot_c = robot ? p_.robot_stiffness_nmpr : 0.0;
   const double robot_d = robot ? p_.robot_damping_nmspr : 0.0;
-  const double th = std::tanh(z(1) / p_.rack_friction_speed_mps);
-  const double dfric = p_.rack_friction_n * (1 - th * th) / p_.rack_friction_speed_mps;
   const double g = (1 + dassist) / i;
   dq_dy << -robot_c - c, c / i, g * c, -g * c / i;
-  dq_dz << -robot_d - d - p_.column_damping_nmspr, d / i, g * d, -g * d / i - dfric;
+  dq_dz << -robot_d - d - p_.column_damping_nmspr, d / i, g * d, -g * d / i;
 }
 
 }  // namespace rig::model::vehicle

@@ -2,7 +2,8 @@
 /// @file
 /// The column steering system (sec. 2.2): steering wheel + column inertia, torsion bar (its
 /// torque is what the assist senses), steering box ratio i_SB (rack travel per pinion angle),
-/// rack mass, rack dry friction (regularized, its steep slope in M_VI keeps it stable), assist
+/// rack mass, dry friction in the rack and the column (stick-predicted by the stepper: each sticks
+/// or slides at its capacity, SteeringSystem::dry_friction), assist
 /// torque on the pinion (input signal or built-in boost curve). The wheel is driven by hand
 /// torque or, in angle mode, by a stiff position servo (a steering robot). The optional
 /// overriding gear (active front steering): a superposition gear adds its motor's angle / i_ov
@@ -30,6 +31,9 @@ class ColumnSteering final : public SteeringSystem {
   [[nodiscard]] double torsion_bar_torque_nm(const Vector& y,
                                              const Vector& z) const noexcept override;
   [[nodiscard]] double assist_torque_nm(const Vector& y, const Vector& z) const noexcept override;
+  /// rack_friction_n on the rack travel, column_friction_nm on the wheel angle.
+  [[nodiscard]] SteeringFriction dry_friction(const Vector& y,
+                                              const Vector& z) const noexcept override;
   /// Assist torque for a torsion bar torque (input signal or boost curve; 0 with the ignition
   /// off) [N m].
   [[nodiscard]] double assist_for_torsion_bar_nm(double torsion_bar_nm) const noexcept;

@@ -71,6 +71,14 @@ void EnhancedSteering::applied_forces(const Vector& y, const Vector& z, Vector& 
   }
 }
 
+void EnhancedSteering::dry_friction(const Vector& y, const Vector& z,
+                                    solver::FrictionSet<Eigen::Dynamic>& contacts) const noexcept {
+  const SteeringFriction f = system_.dry_friction(y.head<2>(), z.head<2>());
+  contacts.clear();
+  contacts.add_on_coordinate(0, f.column_nm);
+  contacts.add_on_coordinate(1, f.rack_n);
+}
+
 bool EnhancedSteering::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
                                        Matrix& dq_dz) const noexcept {
   SteeringSystem::Matrix sy, sz;

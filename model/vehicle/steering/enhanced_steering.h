@@ -41,6 +41,10 @@ class EnhancedSteering final : public solver::MechanicalBlock<Eigen::Dynamic> {
   void applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept override;
   bool force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
                        Matrix& dq_dz) const noexcept override;
+  /// The steering system's dry friction (SteeringSystem::dry_friction) on its two coordinates
+  /// (wheel angle, rack travel: the first two), stick-predicted by the stepper.
+  void dry_friction(const Vector& y, const Vector& z,
+                    solver::FrictionSet<Eigen::Dynamic>& contacts) const noexcept override;
 
   /// Before the step: the state into y, z and each knuckle's axis moment at the step's start.
   void gather() noexcept;

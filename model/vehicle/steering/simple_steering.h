@@ -37,6 +37,14 @@ class SimpleSteering final : public solver::MechanicalBlock<2> {
     dq_dy(1, 1) -= work_.rack_bore_stiffness_npm;
     return true;
   }
+  /// The system's friction on the wheel angle and the rack travel (stick-predicted).
+  void dry_friction(const Vector& y, const Vector& z,
+                    solver::FrictionSet<2>& contacts) const noexcept override {
+    const SteeringFriction f = system_.dry_friction(y, z);
+    contacts.clear();
+    contacts.add_on_coordinate(0, f.column_nm);
+    contacts.add_on_coordinate(1, f.rack_n);
+  }
 
  private:
   SteeringSystem& system_;

@@ -12,6 +12,15 @@
 
 namespace rig::model::vehicle {
 
+/// The dry-friction capacities of a steering system's two coordinates (>= 0; 0: none). The
+/// steering block declares them to the stepper (solver/dry_friction.h), which solves them
+/// stick-predicted, coupled through the mass matrix and the torsion bar: each sticks (speed
+/// exactly 0) or slides at exactly its capacity. No regularised law in applied_forces.
+struct SteeringFriction {
+  double column_nm = 0;  ///< on the steering wheel angle: column bearings, upper column [N m]
+  double rack_n = 0;     ///< on the rack travel u: rack guide, pinion, seals [N]
+};
+
 class SteeringSystem {
  public:
   using Vector = Eigen::Vector2d;
@@ -38,6 +47,15 @@ class SteeringSystem {
                                                      const Vector& z) const noexcept = 0;
   [[nodiscard]] virtual double assist_torque_nm(const Vector& y,
                                                 const Vector& z) const noexcept = 0;
+  /// The hook for dry friction: its capacities this step (constant or load dependent). Every
+  /// system declares its own (a steer-by-wire's actuators, a bench rack's guide); a steering
+  /// model forwards them to its stepper's block (SimpleSteering::dry_friction). Default: none.
+  [[nodiscard]] virtual SteeringFriction dry_friction(const Vector& y,
+                                                      const Vector& z) const noexcept {
+    (void)y;
+    (void)z;
+    return {};
+  }
 };
 
 }  // namespace rig::model::vehicle
