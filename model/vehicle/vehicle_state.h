@@ -64,7 +64,8 @@ struct VehicleState {
   std::array<double, kMaxWheels> shaft_torque_nm{};
   /// The contact patch's torsional deflection phi of the bore torque (model/tire/tmeasy_bore.h).
   std::array<double, kMaxWheels> bore_twist_rad{};
-  /// Its torque at the end of the last step [N m] (the enhanced model takes it at the step's start).
+  /// Its torque at the end of the last step [N m] (the enhanced model takes it at the step's
+  /// start).
   std::array<double, kMaxWheels> bore_torque_nm{};
   /// CG acceleration over the last step, body axes (from z(k+1) - z(k)).
   Vec3 acceleration_mps2 = Vec3::Zero();

@@ -171,7 +171,13 @@ TEST(EnhancedSteering, AgreesWithTheSimpleModelAtStiffTieRods) {
 // gamma = asin(u / arm) the generated steer table; M = M_z - caster trail F_y from the tire's
 // aligning torque (model/tire) and lateral force.
 TEST(EnhancedSteering, StaticTieRodForceIsTheAxisMomentOverTheLever) {
-  const VehicleParams p = sedan(SteeringModel::kEnhanced);
+  // the hand moment knows the trail only: the axis geometry's and the bore torque's moments off
+  VehicleParams p = sedan(SteeringModel::kEnhanced);
+  for (AxleParams& axle : p.axles) {
+    axle.tire.tmeasy.bore.enabled = false;
+    axle.caster_angle_rad = axle.kingpin_inclination_rad = axle.scrub_radius_m = 0;
+    axle.spindle_offset_m = 0;
+  }
   VehicleModel m(p, 1e-3);
   Signals sig = test::all_driver_inputs();
   const double v = 10.0;
