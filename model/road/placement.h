@@ -13,7 +13,8 @@ namespace rig::model::road {
 
 struct Placement {
   bool given = false;  ///< false: where the file puts it (every other field ignored)
-  /// The reference point on the surface [m]; NaN: the reference line's start (u_min / s = 0), v = 0.
+  /// The reference point on the surface [m]; NaN: the reference line's start (u_min / s = 0), v =
+  /// 0.
   double u_m = std::numeric_limits<double>::quiet_NaN();
   double v_m = 0;
   double x_m = 0;  ///< where it goes, road frame [m]
