@@ -202,6 +202,22 @@ AxleParams read_axle(StrictTable t, const std::map<std::string, TireParams>& tir
   return a;
 }
 
+/// The built-in EPS's active return (steering/README.md "active return"); off without its keys.
+void read_active_return(StrictTable& t, model::vehicle::ActiveReturnParams& r) {
+  r.torque_max_nm = t.number_in("active_return_torque_nm", 0.0, 0, 100);
+  r.saturation_angle_rad = t.number_in("active_return_angle_rad", 0.3, 1e-3, 10);
+  r.damping_nmspr = t.number_in("active_return_damping_nmspr", 0.0, 0, 100);
+  r.hands_off_nm = t.number_in("active_return_hands_off_nm", 2.0, 1e-3, 100);
+  if (t.has("active_return_speed_mps")) {
+    const std::vector<double> v = t.numbers("active_return_speed_mps", 4);
+    if (v.size() != 4 || !(v[0] >= 0 && v[0] <= v[1] && v[1] <= v[2] && v[2] <= v[3]) ||
+        !std::isfinite(v[3]))
+      throw t.error("active_return_speed_mps",
+                    "needs 4 finite speeds [on, full, fade, off] >= 0, not decreasing [m/s]");
+    std::copy(v.begin(), v.end(), r.speed_mps.begin());
+  }
+}
+
 /// Reads [steering]; returns the old `trail_m` if the file gives it (see read_vehicle_file).
 std::optional<double> read_steering(StrictTable t, model::vehicle::SteeringParams& s) {
   using model::vehicle::SteeringModel;
@@ -237,6 +253,7 @@ std::optional<double> read_steering(StrictTable t, model::vehicle::SteeringParam
   if (t.has("trail_m")) trail_m = t.number_in("trail_m", 0, 0.5);
   s.assist_gain = t.number_in("assist_gain", 0, 100);
   s.assist_max_nm = t.number_in("assist_max_nm", 1e-3, 1e4);
+  read_active_return(t, s.active_return);
   // the overriding gear (steering/README.md "overriding gear"); defaults: today's simple gear
   s.overlay_ratio = t.number_in("overlay_ratio", 1.0, 1e-3, 1e3);
   s.overlay_bandwidth_hz = t.number_in("overlay_bandwidth_hz", 0.0, 0, 1e3);

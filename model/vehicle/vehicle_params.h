@@ -90,6 +90,24 @@ enum class SteeringModel : std::uint8_t { kSimple, kEnhanced };
 /// actuators, or a real rack on a bench (rack-in-the-loop: its measured travel; enhanced only).
 enum class SteeringSystemKind : std::uint8_t { kColumn, kSteerByWire, kRackInTheLoop };
 
+/// The built-in EPS's active return: what EPS software adds to the boost curve so that a released
+/// wheel comes back to the centre at low speed, where the tires' restoring moments alone do not
+/// overcome the rack's dry friction (the sedan at 20 km/h: 60 N of restoring force at 10 % of a
+/// 90 deg turn against 150 N of friction; steering/README.md "active return"). A torque at the
+/// pinion against the pinion angle theta = u / i_SB:
+///   T_r = -(T_max clamp(theta / theta_sat, -1, 1) + d theta') f(v) max(0, 1 - |T_tb| / T_h)
+/// scheduled over the vehicle's speed by a trapezoid f(v) and faded out as the driver's torque
+/// on the torsion bar T_tb grows. Off (T_max = 0) by default; never with the ECU's assist (the
+/// ECU runs its own) or with the ignition off.
+struct ActiveReturnParams {
+  double torque_max_nm = 0;           ///< T_max at the pinion [N m]; 0: off
+  double saturation_angle_rad = 0.3;  ///< theta_sat: the pinion angle of full return torque
+  double damping_nmspr = 0;           ///< d on the pinion speed [N m s/rad]
+  /// f(v): 0 below [0], rising to 1 at [1], 1 up to [2], falling to 0 at [3] [m/s]
+  std::array<double, 4> speed_mps = {1.4, 2.8, 11.1, 22.2};
+  double hands_off_nm = 2.0;  ///< T_h: the torsion-bar torque at which it has faded out
+};
+
 /// Rack-and-pinion steering (sec. 2.2).
 struct SteeringParams {
   SteeringModel model = SteeringModel::kSimple;             ///< [steering] model
@@ -116,6 +134,7 @@ struct SteeringParams {
   double knuckle_inertia_kgm2 = 1.0;
   double assist_gain = 4.0;  ///< built-in boost curve: T_a = T_max tanh(G T_tb / T_max)
   double assist_max_nm = 12.0;
+  ActiveReturnParams active_return{};  ///< the built-in EPS's return function (boost curve only)
   /// The overriding gear's fastest overlay at the pinion (its motor's speed limit). A step
   /// command is followed at this rate: in one step it jolts the rack (h omega > 2, boosted torsion
   /// bar on the rack mass); with the old regularised friction into a two-step cycle, with the

@@ -10,7 +10,9 @@
 /// at the pinion (the torsion bar's lower end at u / i_SB - overlay), so with the hand wheel
 /// held the rack moves by overlay x i_SB; the command is the overlay at the pinion, the motor
 /// follows it as a first-order lag (overlay_bandwidth_hz) at most at overlay_rate_max_radps.
-/// Ignition off: no assist (neither the input nor the boost curve).
+/// With the boost curve, the EPS's active return (SteeringParams::active_return) brings a
+/// released wheel back at low speed. Ignition off: no assist (neither the input nor the boost
+/// curve, nor the return).
 
 #include "model/vehicle/steering/steering_system.h"
 #include "model/vehicle/vehicle_inputs.h"
@@ -37,8 +39,15 @@ class ColumnSteering final : public SteeringSystem {
   /// Assist torque for a torsion bar torque (input signal or boost curve; 0 with the ignition
   /// off) [N m].
   [[nodiscard]] double assist_for_torsion_bar_nm(double torsion_bar_nm) const noexcept;
+  /// The built-in EPS's active return torque at the pinion (SteeringParams::active_return;
+  /// 0 when off, with the ECU's assist or the ignition off) [N m].
+  [[nodiscard]] double active_return_nm(const Vector& y, const Vector& z,
+                                        double torsion_bar_nm) const noexcept;
 
  private:
+  /// f(v) x the hands-off fade of the active return, 0 when it does not act.
+  [[nodiscard]] double active_return_weight(double torsion_bar_nm) const noexcept;
+
   const SteeringParams& p_;
   VehicleState& state_;
   const VehicleInputs& inputs_;

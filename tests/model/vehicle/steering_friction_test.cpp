@@ -26,7 +26,8 @@ SteeringParams sedan_steering() {
 }
 
 struct Rig {
-  explicit Rig(const SteeringParams& params) : p(params) {}
+  // the framework's speeds at rest (the EPS's active return reads the vehicle's speed: 0 here)
+  explicit Rig(const SteeringParams& params) : p(params) { state.framework_z.setZero(10); }
   SteeringParams p;
   VehicleState state;
   VehicleInputs inputs;
