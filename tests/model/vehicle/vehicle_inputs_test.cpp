@@ -118,6 +118,8 @@ OverlayResult hold_wheel_with_overlay(double speed_mps) {
   // the gear's kinematics alone: without the bore torque's resistance at stand-still (issue 15),
   // which twists the torsion bar by a further F_rack i_SB / c
   for (AxleParams& a : p.axles) a.tire.tmeasy.bore.enabled = false;
+  // nor the built-in EPS's active return, which turns the pinion back against the overlay
+  p.steering.active_return = ActiveReturnParams{};
   VehicleModel m(p, 1e-3);
   const VehicleModel::Equilibrium e = m.settle(speed_mps, speed_mps > 0 ? 99 : 0);
   Signals s = test::all_driver_inputs();
