@@ -44,28 +44,46 @@ double ColumnSteering::assist_for_torsion_bar_nm(double torsion_bar_nm) const no
   return p_.assist_max_nm * std::tanh(p_.assist_gain * torsion_bar_nm / p_.assist_max_nm);
 }
 
-double ColumnSteering::active_return_weight(double torsion_bar_nm) const noexcept {
+double ColumnSteering::active_return_speed_weight() const noexcept {
   const ActiveReturnParams& r = p_.active_return;
   if (r.torque_max_nm <= 0 || !inputs_.ignition_on || inputs_.assist_from_input) return 0.0;
-  // f(v): the trapezoid over the vehicle's speed; then the driver's hands fade it out
+  // f(v): the trapezoid over the vehicle's speed
   const double v = std::abs(state_.framework_z(0));
   const auto ramp = [](double x, double from, double to) {
     return to > from ? std::clamp((x - from) / (to - from), 0.0, 1.0) : (x >= to ? 1.0 : 0.0);
   };
-  const double f_v = ramp(v, r.speed_mps[0], r.speed_mps[1]) *
-                     (1.0 - ramp(v, r.speed_mps[2], r.speed_mps[3]));
-  return f_v * std::max(0.0, 1.0 - std::abs(torsion_bar_nm) / r.hands_off_nm);
+  return ramp(v, r.speed_mps[0], r.speed_mps[1]) * (1.0 - ramp(v, r.speed_mps[2], r.speed_mps[3]));
+}
+
+double ColumnSteering::active_return_weight(double torsion_bar_nm) const noexcept {
+  // the driver's hands fade it out
+  return active_return_speed_weight() *
+         std::max(0.0, 1.0 - std::abs(torsion_bar_nm) / p_.active_return.hands_off_nm);
+}
+
+double ColumnSteering::active_return_full_nm(const Vector& y, const Vector& z) const noexcept {
+  const ActiveReturnParams& r = p_.active_return;
+  const double i = p_.rack_per_pinion_m_per_rad;
+  const double theta = y(1) / i, theta_rate = z(1) / i;  // the pinion (the EPS motor's sensor)
+  return r.torque_max_nm * std::clamp(theta / r.saturation_angle_rad, -1.0, 1.0) +
+         r.damping_nmspr * theta_rate;
 }
 
 double ColumnSteering::active_return_nm(const Vector& y, const Vector& z,
                                         double torsion_bar_nm) const noexcept {
   const double w = active_return_weight(torsion_bar_nm);
   if (w == 0.0) return 0.0;
-  const ActiveReturnParams& r = p_.active_return;
-  const double i = p_.rack_per_pinion_m_per_rad;
-  const double theta = y(1) / i, theta_rate = z(1) / i;  // the pinion (the EPS motor's sensor)
-  return -w * (r.torque_max_nm * std::clamp(theta / r.saturation_angle_rad, -1.0, 1.0) +
-               r.damping_nmspr * theta_rate);
+  return -w * active_return_full_nm(y, z);
+}
+
+double ColumnSteering::active_return_fade_slope(const Vector& y, const Vector& z,
+                                                double torsion_bar_nm) const noexcept {
+  const double h = p_.active_return.hands_off_nm;
+  if (std::abs(torsion_bar_nm) >= h) return 0.0;  // faded out: flat
+  const double f_v = active_return_speed_weight();
+  if (f_v == 0.0) return 0.0;
+  // T_r = -f(v) (1 - |T_tb| / T_h) R  ->  d T_r / d T_tb = f(v) sign(T_tb) R / T_h
+  return f_v * (torsion_bar_nm < 0 ? -1.0 : 1.0) * active_return_full_nm(y, z) / h;
 }
 
 double ColumnSteering::assist_torque_nm(const Vector& y, const Vector& z) const noexcept {
@@ -95,21 +113,24 @@ void ColumnSteering::force_jacobians(const Vector& y, const Vector& z, Matrix& d
                                      Matrix& dq_dz) const noexcept {
   const double i = p_.rack_per_pinion_m_per_rad;
   const double c = p_.torsion_bar_stiffness_nmpr, d = p_.torsion_bar_damping_nmspr;
+  const double tb = torsion_bar_torque_nm(y, z);
   double dassist = p_.assist_gain;  // d T_a / d T_tb of the boost curve
   if (inputs_.assist_from_input || !inputs_.ignition_on) {
     dassist = 0;
   } else {
-    const double t = std::tanh(p_.assist_gain * torsion_bar_torque_nm(y, z) / p_.assist_max_nm);
+    const double t = std::tanh(p_.assist_gain * tb / p_.assist_max_nm);
     dassist = p_.assist_gain * (1 - t * t);
   }
   const bool robot = !p_.torque_input && !inputs_.robot_released;
   const double robot_c = robot ? p_.robot_stiffness_nmpr : 0.0;
   const double robot_d = robot ? p_.robot_damping_nmspr : 0.0;
-  const double g = (1 + dassist) / i;
+  // the active return fades with the torsion bar's torque: it moves with the twist as the
+  // boost curve does
+  const double g = (1 + dassist + active_return_fade_slope(y, z, tb)) / i;
   dq_dy << -robot_c - c, c / i, g * c, -g * c / i;
   dq_dz << -robot_d - d - p_.column_damping_nmspr, d / i, g * d, -g * d / i;
-  // the active return's slope and damping on the pinion angle (its weight held over the step)
-  const double w = active_return_weight(torsion_bar_torque_nm(y, z));
+  // the active return's slope and damping on the pinion angle
+  const double w = active_return_weight(tb);
   if (w > 0) {
     const ActiveReturnParams& r = p_.active_return;
     const double theta = y(1) / i;

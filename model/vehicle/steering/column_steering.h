@@ -45,8 +45,15 @@ class ColumnSteering final : public SteeringSystem {
                                         double torsion_bar_nm) const noexcept;
 
  private:
+  /// f(v) of the active return, 0 when it does not act (off, the ECU's assist, ignition off).
+  [[nodiscard]] double active_return_speed_weight() const noexcept;
   /// f(v) x the hands-off fade of the active return, 0 when it does not act.
   [[nodiscard]] double active_return_weight(double torsion_bar_nm) const noexcept;
+  /// The return before its weight: T_max clamp(theta / theta_sat) + d theta' [N m].
+  [[nodiscard]] double active_return_full_nm(const Vector& y, const Vector& z) const noexcept;
+  /// d T_r / d T_tb: the hands-off fade's slope on the return (0 where the fade is flat).
+  [[nodiscard]] double active_return_fade_slope(const Vector& y, const Vector& z,
+                                                double torsion_bar_nm) const noexcept;
 
   const SteeringParams& p_;
   VehicleState& state_;

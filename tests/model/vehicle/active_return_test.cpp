@@ -99,7 +99,8 @@ TEST(ActiveReturn, OffWithTheEcusAssistOrTheIgnitionOffOrWithoutItsKeys) {
 }
 
 // The implicit step's partials of q(1) (the rack's force) in the rack travel and speed include the
-// return's slope T_max / theta_sat / i_SB^2 and damping d / i_SB^2: finite differences agree.
+// return's slope T_max / theta_sat / i_SB^2 and damping d / i_SB^2, and in the twist the fade's
+// slope d T_r / d T_tb beside the boost curve's: finite differences and hand values agree.
 TEST(ActiveReturn, PartialsMatchFiniteDifferences) {
   const SteeringParams p = sedan_steering();
   Rig r(p, 5.0);
@@ -113,8 +114,8 @@ TEST(ActiveReturn, PartialsMatchFiniteDifferences) {
     r.system.applied_forces(yy, zz, q);
     return q;
   };
-  // the hands-off weight is held over the step (as in the code), so compare at a fixed twist:
-  // wheel and rack moved together
+  // the return's own slope and damping: at a fixed twist (wheel and rack moved together) the
+  // hands-off weight stays
   const double e = 1e-9;
   Eigen::Vector2d y2 = y, z2 = z;
   y2(1) += e;
@@ -133,6 +134,21 @@ TEST(ActiveReturn, PartialsMatchFiniteDifferences) {
   const double i2 = p.rack_per_pinion_m_per_rad * p.rack_per_pinion_m_per_rad;
   EXPECT_NEAR(slope, -0.9 * 2.5 / 0.3 / i2, 1e-6 * 0.9 * 2.5 / 0.3 / i2);
   EXPECT_NEAR(damping, -0.9 * 0.3 / i2, 1e-6 * 0.9 * 0.3 / i2);
+  // the twist (the wheel alone): T_tb moves the boost curve, G (1 - tanh^2(G T_tb / T_max)), and
+  // the fade, d T_r / d T_tb = f(v) R / T_h with the return before its weight R = T_max theta /
+  // theta_sat + d theta' (f(v) = 1 at 5 m/s; theta 0.1 rad, theta' 0.04 rad/s, T_tb 0.2 N m)
+  Eigen::Vector2d y3 = y;
+  y3(0) += e;
+  const double twist_fd = (q_of(y3, z)(1) - q_of(y, z)(1)) / e;
+  const double boost = std::tanh(p.assist_gain * 0.2 / p.assist_max_nm);
+  const double fade = (2.5 * 0.1 / 0.3 + 0.3 * 0.04) / 2.0;
+  const double twist_hand = p.torsion_bar_stiffness_nmpr *
+                            (1 + p.assist_gain * (1 - boost * boost) + fade) /
+                            p.rack_per_pinion_m_per_rad;
+  std::printf("dq_rack/dphi: %.1f (finite difference %.1f, hand %.1f) N/rad\n", jy(1, 0), twist_fd,
+              twist_hand);
+  EXPECT_NEAR(jy(1, 0), twist_fd, 1e-4 * std::abs(twist_fd));
+  EXPECT_NEAR(jy(1, 0), twist_hand, 1e-9 * twist_hand);
 }
 
 // Released (torque input, hand 0) at 20 km/h from 1.5 rad, no tire load: the return torque turns
