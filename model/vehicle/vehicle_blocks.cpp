@@ -96,6 +96,8 @@ void VehicleBlocks::update_contacts() noexcept {
     const auto k = static_cast<std::size_t>(i);
     WheelWork& w = work_.wheels[k];
     const tire::TmeasyParams& t = p_.axles[k / 2].tire.tmeasy;
+    const bool plane = framework_.road().is_plane();
+    if (!plane) w.road = framework_.road_plane(rot, y, i, w.probe_hints);
     const WheelContact c = framework_.contact(rot, y, z, i);
     w.load_n = tire::vertical_tire_force(t.vertical_stiffness_npm, t.vertical_damping_nspm,
                                          c.penetration_m, c.penetration_rate_mps)
@@ -103,7 +105,7 @@ void VehicleBlocks::update_contacts() noexcept {
     tire::TireContact& tc = w.tire;
     tc.kinematics = {c.vx_mps, c.vy_mps, state_.spin_radps[k],
                      tire::dynamic_rolling_radius(t.radius_unloaded_m, c.penetration_m)};
-    w.road_friction = framework_.road().friction(i % 2 == 1);
+    w.road_friction = plane ? framework_.road().friction(i % 2 == 1) : w.road.mu;
     tc.characteristic = tire::characteristic_at(t, w.load_n, w.road_friction);
     const tire::TireSlip slip =
         tire::slip_of(tc.characteristic, tc.kinematics, t.velocity_floor_mps);
@@ -117,8 +119,14 @@ void VehicleBlocks::update_outputs() noexcept {
   const auto& y = state_.framework_y;
   const auto& z = state_.framework_z;
   const Mat3 rot = body_to_road(y(3), y(4), y(5));
-  for (int i = 0; i < work_.wheel_count; ++i)
-    work_.wheels[static_cast<std::size_t>(i)].out = framework_.wheel_forces(rot, y, z, i);
+  const bool plane = framework_.road().is_plane();
+  for (int i = 0; i < work_.wheel_count; ++i) {
+    WheelWork& w = work_.wheels[static_cast<std::size_t>(i)];
+    const WheelContact c = framework_.contact(rot, y, z, i);
+    w.out = framework_.wheel_forces(c, y, z, i);
+    // the plane road is z = 0 of the road frame; else the local plane's height at the contact
+    w.road_z_m = plane ? 0.0 : y(2) + rot.row(2).dot(c.lever_m);
+  }
   work_.torsion_bar_torque_nm =
       steering_system_->torsion_bar_torque_nm(state_.steering_y, state_.steering_z);
   work_.assist_torque_nm = steering_system_->assist_torque_nm(state_.steering_y, state_.steering_z);
