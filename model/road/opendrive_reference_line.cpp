@@ -1,0 +1,257 @@
+#include "model/road/opendrive_reference_line.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "model/road/gauss_legendre.h"
+
+namespace rig::model::road {
+
+namespace {
+
+constexpr double kSpiralKnotStepMax_m = 2.0;
+constexpr double kPoly3KnotStep_m = 1.0;
+constexpr int kMaxKnots = 20'000'000;
+
+/// sin(x) / x, exact near 0 (the arc's chord over its length, halved angle).
+double sinc(double x) noexcept { return std::abs(x) < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x; }
+
+double cubic(double a, double b, double c, double d, double p) noexcept {
+  return a + p * (b + p * (c + p * d));
+}
+double cubic_slope(double b, double c, double d, double p) noexcept {
+  return b + p * (2.0 * c + p * 3.0 * d);
+}
+double cubic_curve(double c, double d, double p) noexcept { return 2.0 * c + 6.0 * d * p; }
+
+bool finite_geometry(const OpenDriveGeometry& g) {
+  for (const double v : {g.s_m,
+                         g.x_m,
+                         g.y_m,
+                         g.hdg_rad,
+                         g.length_m,
+                         g.curvature_1pm,
+                         g.curv_start_1pm,
+                         g.curv_end_1pm,
+                         g.a,
+                         g.b,
+                         g.c,
+                         g.d,
+                         g.au,
+                         g.bu,
+                         g.cu,
+                         g.du,
+                         g.av,
+                         g.bv,
+                         g.cv,
+                         g.dv}) {
+    if (!std::isfinite(v)) return false;
+  }
+  return true;
+}
+
+/// Arc length of the poly3 v(u) from u0 to u1: the integral of sqrt(1 + v'(u)^2).
+double poly3_arc(const OpenDriveGeometry& g, double u0, double u1) noexcept {
+  return gauss_legendre6(u0, u1, [&g](double u) {
+    const double slope = cubic_slope(g.b, g.c, g.d, u);
+    return std::sqrt(1.0 + slope * slope);
+  });
+}
+
+/// The u at which the poly3's arc length from u0 reaches `length` (Newton on the arc length).
+double poly3_u_at(const OpenDriveGeometry& g, double u0, double length) noexcept {
+  double slope = cubic_slope(g.b, g.c, g.d, u0);
+  double u = u0 + length / std::sqrt(1.0 + slope * slope);
+  for (int it = 0; it < 8; ++it) {
+    slope = cubic_slope(g.b, g.c, g.d, u);
+    const double step = (poly3_arc(g, u0, u) - length) / std::sqrt(1.0 + slope * slope);
+    u -= step;
+    if (std::abs(step) < 1e-13 * (1.0 + std::abs(u))) break;
+  }
+  return u;
+}
+
+}  // namespace
+
+OpenDriveReferenceLine::OpenDriveReferenceLine(const std::vector<OpenDriveGeometry>& plan_view) {
+  for (const OpenDriveGeometry& g : plan_view) {
+    if (!finite_geometry(g)) throw std::invalid_argument("plan view: a number is not finite");
+    if (g.length_m < 0) throw std::invalid_argument("plan view: a negative length");
+    if (!elements_.empty() && g.s_m < elements_.back().g.s_m)
+      throw std::invalid_argument("plan view: geometries not in increasing s");
+    if (g.length_m == 0) continue;  // no extent: nothing of the line is in it
+    Element& e = elements_.emplace_back();
+    e.g = g;
+    e.cos_hdg = std::cos(g.hdg_rad);
+    e.sin_hdg = std::sin(g.hdg_rad);
+    e.spiral_rate = (g.curv_end_1pm - g.curv_start_1pm) / g.length_m;
+    e.p_per_s = g.p_normalized ? 1.0 / g.length_m : 1.0;
+  }
+  if (elements_.empty()) throw std::invalid_argument("plan view: no geometry of positive length");
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    Element& e = elements_[i];
+    const double next_s = i + 1 < elements_.size() ? elements_[i + 1].g.s_m : e.g.s_m;
+    add_knots(e, std::max(e.g.length_m, next_s - e.g.s_m));
+  }
+  start_s_ = elements_.front().g.s_m;
+  end_s_ = elements_.back().g.s_m + elements_.back().g.length_m;
+  start_pose_ = local(elements_.front(), 0.0);
+  end_pose_ = local(elements_.back(), elements_.back().g.length_m);
+  for (const Element& e : elements_) {
+    const int n = std::max(2, static_cast<int>(std::ceil(e.g.length_m / 0.5)));
+    for (int k = 0; k <= n; ++k) {
+      const double ds = e.g.length_m * k / n;
+      max_curvature_ = std::max(max_curvature_, std::abs(local(e, ds).curvature_1pm));
+    }
+  }
+}
+
+void OpenDriveReferenceLine::add_knots(Element& e, double span_m) {
+  const OpenDriveGeometry& g = e.g;
+  if (g.kind == OpenDriveGeometryKind::kSpiral) {
+    const double k_max = std::max(std::abs(g.curv_start_1pm), std::abs(g.curv_end_1pm));
+    // heading change over a knot step at most 0.25 rad (the quadrature is then exact to ~1e-15)
+    e.knot_step_m = std::min({kSpiralKnotStepMax_m, 0.25 / std::max(k_max, 1e-12),
+                              0.5 / std::sqrt(std::max(std::abs(e.spiral_rate), 1e-24))});
+  } else if (g.kind == OpenDriveGeometryKind::kPoly3) {
+    e.knot_step_m = kPoly3KnotStep_m;
+  } else {
+    return;
+  }
+  const double intervals = std::ceil(span_m / e.knot_step_m);
+  if (intervals + static_cast<double>(knots_.size()) > kMaxKnots)
+    throw std::invalid_argument("plan view: too long or too tightly curved (over " +
+                                std::to_string(kMaxKnots) + " quadrature knots)");
+  e.first_knot = static_cast<int>(knots_.size());
+  e.knot_count = static_cast<int>(intervals) + 1;
+  if (g.kind == OpenDriveGeometryKind::kSpiral) {
+    Knot k{g.x_m, g.y_m};
+    knots_.push_back(k);
+    for (int i = 1; i < e.knot_count; ++i) {
+      const double s0 = (i - 1) * e.knot_step_m;
+      const Eigen::Vector2d d = gauss_legendre6(s0, s0 + e.knot_step_m, [&](double ds) {
+        const double th = g.hdg_rad + ds * (g.curv_start_1pm + 0.5 * e.spiral_rate * ds);
+        return Eigen::Vector2d(std::cos(th), std::sin(th));
+      });
+      k.x += d.x();
+      k.y += d.y();
+      knots_.push_back(k);
+    }
+  } else {
+    double u = 0;
+    knots_.push_back({u, 0});
+    for (int i = 1; i < e.knot_count; ++i) {
+      u = poly3_u_at(g, u, e.knot_step_m);
+      knots_.push_back({u, 0});
+    }
+  }
+}
+
+int OpenDriveReferenceLine::find(double s_m, int hint) const noexcept {
+  const int n = element_count();
+  auto covers = [&](int i) {
+    return i >= 0 && i < n && elements_[i].g.s_m <= s_m &&
+           (i + 1 == n || s_m < elements_[i + 1].g.s_m);
+  };
+  for (const int i : {hint, hint + 1, hint - 1}) {
+    if (covers(i)) return i;
+  }
+  const auto it = std::upper_bound(elements_.begin(), elements_.end(), s_m,
+                                   [](double s, const Element& e) { return s < e.g.s_m; });
+  return static_cast<int>(it - elements_.begin()) - 1;  // -1: before the first
+}
+
+ReferencePose OpenDriveReferenceLine::pose(double s_m, int& element) const noexcept {
+  if (s_m < start_s_) {
+    element = -1;
+    return straight(start_pose_, s_m - start_s_);
+  }
+  if (s_m > end_s_) {
+    element = element_count();
+    return straight(end_pose_, s_m - end_s_);
+  }
+  element = find(s_m, element);
+  const Element& e = elements_[static_cast<std::size_t>(element)];
+  return local(e, s_m - e.g.s_m);
+}
+
+ReferencePose OpenDriveReferenceLine::straight(const ReferencePose& from, double ds_m) noexcept {
+  ReferencePose p = from;
+  p.x_m += ds_m * std::cos(from.hdg_rad);
+  p.y_m += ds_m * std::sin(from.hdg_rad);
+  p.curvature_1pm = 0;
+  p.speed = 1;
+  return p;
+}
+
+ReferencePose OpenDriveReferenceLine::local(const Element& e, double ds_m) const noexcept {
+  const OpenDriveGeometry& g = e.g;
+  switch (g.kind) {
+    case OpenDriveGeometryKind::kLine:
+      return {g.x_m + ds_m * e.cos_hdg, g.y_m + ds_m * e.sin_hdg, g.hdg_rad, 0.0, 1.0};
+    case OpenDriveGeometryKind::kArc: {
+      // the chord 2 sin(k ds / 2) / k along the mean heading hdg + k ds / 2
+      const double half = 0.5 * g.curvature_1pm * ds_m;
+      const double chord = ds_m * sinc(half);
+      const double mean = g.hdg_rad + half;
+      return {g.x_m + chord * std::cos(mean), g.y_m + chord * std::sin(mean),
+              g.hdg_rad + 2.0 * half, g.curvature_1pm, 1.0};
+    }
+    case OpenDriveGeometryKind::kSpiral:
+      return spiral(e, ds_m);
+    case OpenDriveGeometryKind::kPoly3:
+      return poly3(e, ds_m);
+    case OpenDriveGeometryKind::kParamPoly3:
+      return param_poly3(e, ds_m);
+  }
+  return {};
+}
+
+ReferencePose OpenDriveReferenceLine::spiral(const Element& e, double ds_m) const noexcept {
+  const OpenDriveGeometry& g = e.g;
+  auto heading = [&](double ds) {
+    return g.hdg_rad + ds * (g.curv_start_1pm + 0.5 * e.spiral_rate * ds);
+  };
+  const int k = std::clamp(static_cast<int>(ds_m / e.knot_step_m), 0, e.knot_count - 1);
+  const Knot& knot = knots_[static_cast<std::size_t>(e.first_knot + k)];
+  const Eigen::Vector2d d = gauss_legendre6(k * e.knot_step_m, ds_m, [&](double ds) {
+    const double th = heading(ds);
+    return Eigen::Vector2d(std::cos(th), std::sin(th));
+  });
+  return {knot.x + d.x(), knot.y + d.y(), heading(ds_m), g.curv_start_1pm + e.spiral_rate * ds_m,
+          1.0};
+}
+
+ReferencePose OpenDriveReferenceLine::poly3(const Element& e, double ds_m) const noexcept {
+  const OpenDriveGeometry& g = e.g;
+  const int k = std::clamp(static_cast<int>(ds_m / e.knot_step_m), 0, e.knot_count - 1);
+  const double u =
+      poly3_u_at(g, knots_[static_cast<std::size_t>(e.first_knot + k)].x, ds_m - k * e.knot_step_m);
+  const double v = cubic(g.a, g.b, g.c, g.d, u);
+  const double slope = cubic_slope(g.b, g.c, g.d, u);
+  const double w = 1.0 + slope * slope;
+  return {g.x_m + u * e.cos_hdg - v * e.sin_hdg, g.y_m + u * e.sin_hdg + v * e.cos_hdg,
+          g.hdg_rad + std::atan(slope), cubic_curve(g.c, g.d, u) / (w * std::sqrt(w)), 1.0};
+}
+
+ReferencePose OpenDriveReferenceLine::param_poly3(const Element& e, double ds_m) noexcept {
+  const OpenDriveGeometry& g = e.g;
+  const double p = ds_m * e.p_per_s;
+  const double u = cubic(g.au, g.bu, g.cu, g.du, p);
+  const double v = cubic(g.av, g.bv, g.cv, g.dv, p);
+  const double du = cubic_slope(g.bu, g.cu, g.du, p);
+  const double dv = cubic_slope(g.bv, g.cv, g.dv, p);
+  const double ddu = cubic_curve(g.cu, g.du, p);
+  const double ddv = cubic_curve(g.cv, g.dv, p);
+  const double q = du * du + dv * dv;
+  const double rate = std::sqrt(q);
+  // curvature of a parametric plane curve: (u' v'' - v' u'') / (u'^2 + v'^2)^(3/2)
+  const double curvature = q > 0 ? (du * ddv - dv * ddu) / (q * rate) : 0.0;
+  return {g.x_m + u * e.cos_hdg - v * e.sin_hdg, g.y_m + u * e.sin_hdg + v * e.cos_hdg,
+          g.hdg_rad + std::atan2(dv, du), curvature, rate * e.p_per_s};
+}
+
+}  // namespace rig::model::road
