@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 #include <pugixml.hpp>
 
@@ -37,7 +38,8 @@ std::string format(double v) {
 /// Element lines from pugixml's offsets, messages and strict attribute numbers.
 class Reader {
  public:
-  Reader(std::filesystem::path file, const std::string& text) : file_(std::move(file)) {
+  Reader(std::filesystem::path file, const std::string& text)
+      : file_(std::move(file)), size_(text.size()) {
     line_starts_.push_back(0);
     for (std::size_t i = 0; i < text.size(); ++i) {
       if (text[i] == '\n') line_starts_.push_back(i + 1);
@@ -46,8 +48,9 @@ class Reader {
 
   [[nodiscard]] int line_at(std::ptrdiff_t offset) const {
     if (offset < 0) return 1;
-    const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(),
-                                     static_cast<std::size_t>(offset));
+    // an error at the end of the text is on its last line, not after its final newline
+    const std::size_t at = std::min(static_cast<std::size_t>(offset), size_ > 0 ? size_ - 1 : 0);
+    const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), at);
     return static_cast<int>(it - line_starts_.begin());
   }
   [[nodiscard]] int line(const pugi::xml_node& node) const { return line_at(node.offset_debug()); }
@@ -92,6 +95,7 @@ class Reader {
 
  private:
   std::filesystem::path file_;
+  std::size_t size_ = 0;
   std::vector<std::size_t> line_starts_;
 };
 
@@ -191,13 +195,20 @@ std::vector<OpenDrivePolynomial> read_records(Reader& r, const pugi::xml_node& p
 
 double wrap(double angle) { return std::remainder(angle, 2.0 * std::numbers::pi); }
 
-/// Gaps and kinks between consecutive geometries (warnings: each geometry's start is used).
+/// Gaps and kinks between consecutive geometries of positive length (warnings: each geometry's
+/// own start is used).
 void check_continuity(Reader& r, const std::vector<OpenDriveGeometry>& plan,
                       const std::vector<pugi::xml_node>& nodes) {
-  for (std::size_t i = 0; i + 1 < plan.size(); ++i) {
-    const OpenDriveGeometry& a = plan[i];
-    const OpenDriveGeometry& b = plan[i + 1];
-    if (a.length_m == 0 || b.length_m == 0) continue;
+  std::size_t previous = plan.size();
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    if (plan[i].length_m == 0) continue;
+    if (previous == plan.size()) {
+      previous = i;
+      continue;
+    }
+    const OpenDriveGeometry& a = plan[previous];
+    const OpenDriveGeometry& b = plan[i];
+    previous = i;
     int element = 0;
     const auto end = model::road::OpenDriveReferenceLine({a}).pose(a.s_m + a.length_m, element);
     const auto start = model::road::OpenDriveReferenceLine({b}).pose(b.s_m, element);
@@ -205,10 +216,9 @@ void check_continuity(Reader& r, const std::vector<OpenDriveGeometry>& plan,
     const double kink = std::abs(wrap(start.hdg_rad - end.hdg_rad));
     const double s_gap = b.s_m - (a.s_m + a.length_m);
     if (gap > kGap_m || kink > kKink_rad || std::abs(s_gap) > kGap_m) {
-      r.warn(nodes[i + 1], "<geometry> at s = " + format(b.s_m) + " starts " + format(gap) +
-                               " m and " + format(kink) +
-                               " rad from the end of the previous one (s off by " + format(s_gap) +
-                               " m); its own start is used");
+      r.warn(nodes[i], "<geometry> at s = " + format(b.s_m) + " starts " + format(gap) + " m and " +
+                           format(kink) + " rad from the end of the previous one (s off by " +
+                           format(s_gap) + " m); its own start is used");
     }
   }
 }
@@ -280,7 +290,13 @@ OpenDriveFile load_opendrive_file(const std::filesystem::path& file) {
   for (const pugi::xml_node node : root.children("road")) {
     if (out.roads.size() == kMaxOpenDriveRecords)
       throw r.error(node, "more than " + std::to_string(kMaxOpenDriveRecords) + " roads");
-    out.roads.push_back(read_road(r, node));
+    OpenDriveRoad road = read_road(r, node);
+    for (std::size_t i = 0; i < out.roads.size(); ++i) {
+      if (out.roads[i].id == road.id)
+        throw r.error(node, "id \"" + road.id + "\" is already the id of the road at line " +
+                                std::to_string(out.road_lines[i]));
+    }
+    out.roads.push_back(std::move(road));
     out.road_lines.push_back(r.line(node));
   }
   if (out.roads.empty()) throw r.error(root, "has no <road>");
@@ -300,6 +316,18 @@ const model::road::OpenDriveRoad& select_road(const OpenDriveFile& file, std::st
   throw ConfigError(file.path.string() + ":" + std::to_string(file.road_lines.front()) +
                     ": no <road> with id \"" + std::string(road_id) + "\" (the file has " + ids +
                     ")");
+}
+
+std::shared_ptr<const model::road::OpenDriveSurface> make_opendrive_surface(
+    const OpenDriveFile& file, std::string_view road_id, const model::road::Placement& placement) {
+  const OpenDriveRoad& road = select_road(file, road_id);
+  const auto index = static_cast<std::size_t>(&road - file.roads.data());
+  try {
+    return std::make_shared<const model::road::OpenDriveSurface>(road, placement);
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(file.path.string() + ":" + std::to_string(file.road_lines[index]) +
+                      ": road " + road.id + ": " + e.what());
+  }
 }
 
 }  // namespace rig::io::config

@@ -13,11 +13,14 @@
 /// view's, a lateral <shape> (not applied).
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "model/road/opendrive_road.h"
+#include "model/road/opendrive_surface.h"
+#include "model/road/placement.h"
 
 namespace rig::io::config {
 
@@ -37,5 +40,11 @@ OpenDriveFile load_opendrive_file(const std::filesystem::path& file);
 /// The road with id `road_id` ("": the file's first). Throws ConfigError naming the file's
 /// road ids if there is none.
 const model::road::OpenDriveRoad& select_road(const OpenDriveFile& file, std::string_view road_id);
+
+/// The surface of the road `road_id` ("": the first) placed by `placement` (given = false:
+/// where the file puts it). What the model refuses (a road too long for its curvature: over a
+/// million projection samples) is a ConfigError at the road's line.
+std::shared_ptr<const model::road::OpenDriveSurface> make_opendrive_surface(
+    const OpenDriveFile& file, std::string_view road_id, const model::road::Placement& placement);
 
 }  // namespace rig::io::config

@@ -6,6 +6,7 @@
 #include <map>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace rig::model::road {
@@ -17,7 +18,7 @@ constexpr double kReachCap_m = 100.0;   // beyond |t| = 100 m every query search
 constexpr double kNewtonMaxStep_m = 5.0;
 constexpr int kNewtonIterations = 12;
 constexpr double kConverged_m = 1e-6;  // the last Newton step is applied to first order
-constexpr std::size_t kMaxSamples = 20'000'000;
+constexpr std::size_t kMaxSamples = 1'000'000;
 
 double squared(double v) noexcept { return v * v; }
 
@@ -30,9 +31,10 @@ ReferenceLineProjection::ReferenceLineProjection(const OpenDriveReferenceLine& l
   const double length = line.end_s_m() - line.start_s_m() + 2.0 * kExtension_m;
   const double count = std::ceil(length / step_) + 1.0;
   if (count > static_cast<double>(kMaxSamples))
-    throw std::invalid_argument(
-        "reference line: too long for its curvature (over 20 million "
-        "projection samples)");
+    throw std::invalid_argument("the reference line is too long for its curvature: " +
+                                std::to_string(static_cast<long long>(count)) +
+                                " projection samples of at most " + std::to_string(kMaxSamples) +
+                                " (one every " + std::to_string(step_) + " m)");
   samples_.reserve(static_cast<std::size_t>(count));
   int element = -1;
   for (std::size_t k = 0; k < static_cast<std::size_t>(count); ++k) {

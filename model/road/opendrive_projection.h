@@ -32,7 +32,8 @@ struct Station {
 class ReferenceLineProjection {
  public:
   /// Samples the line from 100 m before its start to 100 m after its end (the extensions are
-  /// part of the line); throws std::invalid_argument beyond 20 million samples.
+  /// part of the line), at most 1 m apart; throws std::invalid_argument beyond a million
+  /// samples (about 44 bytes each with the grid).
   explicit ReferenceLineProjection(const OpenDriveReferenceLine& line);
 
   /// The station of (x, y) [m] (file coordinates). hint.i is the element + 1 of the last query

@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kSpiralKnotStepMax_m = 2.0;
 constexpr double kPoly3KnotStep_m = 1.0;
-constexpr int kMaxKnots = 20'000'000;
+constexpr int kMaxKnots = 1'000'000;
 
 /// sin(x) / x, exact near 0 (the arc's chord over its length, halved angle).
 double sinc(double x) noexcept { return std::abs(x) < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x; }
@@ -123,8 +123,8 @@ void OpenDriveReferenceLine::add_knots(Element& e, double span_m) {
   }
   const double intervals = std::ceil(span_m / e.knot_step_m);
   if (intervals + static_cast<double>(knots_.size()) > kMaxKnots)
-    throw std::invalid_argument("plan view: too long or too tightly curved (over " +
-                                std::to_string(kMaxKnots) + " quadrature knots)");
+    throw std::invalid_argument("the plan view is too long or too tightly curved: over " +
+                                std::to_string(kMaxKnots) + " quadrature knots");
   e.first_knot = static_cast<int>(knots_.size());
   e.knot_count = static_cast<int>(intervals) + 1;
   if (g.kind == OpenDriveGeometryKind::kSpiral) {
