@@ -17,7 +17,8 @@ constexpr double kExtension_m = 100.0;  // sampled length of each straight exten
 constexpr double kReachCap_m = 100.0;   // beyond |t| = 100 m every query searches globally
 constexpr double kNewtonMaxStep_m = 5.0;
 constexpr int kNewtonIterations = 12;
-constexpr double kConverged_m = 1e-6;  // the last Newton step is applied to first order
+constexpr double kConverged_m = 1e-10;        // the foot's error left by the last step
+constexpr double kCurvatureFloor_1pm = 0.05;  // Newton's error bound where the rate is unknown
 constexpr std::size_t kMaxSamples = 1'000'000;
 
 double squared(double v) noexcept { return v * v; }
@@ -135,25 +136,67 @@ Station ReferenceLineProjection::project(double x_m, double y_m, SurfaceHint& hi
   return out;
 }
 
+namespace {
+
+/// atan(x) / x, exact near 0 (the osculating circle's foot).
+double atan_ratio(double x) noexcept {
+  if (std::abs(x) > 1e-3) return std::atan(x) / x;
+  const double x2 = x * x;
+  return 1.0 - x2 / 3.0 + x2 * x2 / 5.0;
+}
+
+/// The pose moved by arc length `l` along its osculating circle (exact on lines and arcs).
+ReferencePose along_circle(const ReferencePose& p, double l) noexcept {
+  const double turn = p.curvature_1pm * l;
+  ReferencePose q = p;
+  if (turn == 0) {
+    q.x_m += l * p.cos_hdg;
+    q.y_m += l * p.sin_hdg;
+    return q;
+  }
+  const double ch = std::cos(0.5 * turn), sh = std::sin(0.5 * turn);
+  const double chord = std::abs(turn) > 1e-4 ? 2.0 * sh / p.curvature_1pm : l;
+  const double cm = p.cos_hdg * ch - p.sin_hdg * sh, sm = p.sin_hdg * ch + p.cos_hdg * sh;
+  q.x_m += chord * cm;
+  q.y_m += chord * sm;
+  q.hdg_rad += turn;
+  q.cos_hdg = cm * ch - sm * sh;
+  q.sin_hdg = sm * ch + cm * sh;
+  q.curvature_1pm += p.curvature_rate * l;
+  return q;
+}
+
+}  // namespace
+
 bool ReferenceLineProjection::newton(double x, double y, double s, int& element,
                                      Station& out) const noexcept {
   for (int it = 0; it < kNewtonIterations; ++it) {
     const ReferencePose p = line_.pose(s, element);
-    const double c = std::cos(p.hdg_rad), sn = std::sin(p.hdg_rad);
     const double dx = x - p.x_m, dy = y - p.y_m;
-    const double along = dx * c + dy * sn;
-    const double t = -dx * sn + dy * c;
-    const double rate = p.speed * (1.0 - t * p.curvature_1pm);
-    if (!(rate > 0.1 * p.speed)) return false;  // at or beyond the centre of curvature
-    const double step = along / rate;
-    if (std::abs(step) < kConverged_m) {
-      // the last step to first order: the foot moves along the tangent, t is stationary
+    const double along = dx * p.cos_hdg + dy * p.sin_hdg;
+    const double t = -dx * p.sin_hdg + dy * p.cos_hdg;
+    const double bend = 1.0 - t * p.curvature_1pm;
+    if (!(bend > 0.1)) return false;  // at or beyond the centre of curvature
+    // The foot on the osculating circle: arc length atan(kappa a / (1 - kappa t)) / kappa. Exact
+    // on lines and arcs; on a clothoid the tangent there is off by rate l^2 / 2, the foot by
+    // about |t| rate l^2 / 2; elsewhere Newton's error, about kappa step^2.
+    const double l = along / bend * atan_ratio(p.curvature_1pm * along / bend);
+    const double step = l / p.speed;
+    const double rate = std::abs(p.curvature_rate);
+    const double left =
+        rate == 0 ? 0.0
+                  : std::min(0.5 * (std::abs(t) + std::abs(l)) * rate * l * l,
+                             step * step * (std::abs(p.curvature_1pm) + kCurvatureFloor_1pm));
+    if (left < kConverged_m && line_.in_element(s + step, element)) {
       out.s_m = s + step;
-      out.t_m = t;
       out.pose = p;
-      out.pose.x_m += step * p.speed * c;
-      out.pose.y_m += step * p.speed * sn;
-      out.pose.hdg_rad += step * p.speed * p.curvature_1pm;
+      if (p.speed == 1.0) {
+        out.pose = along_circle(p, l);
+      } else {  // a paramPoly3, the step tiny here: first order along the tangent
+        out.pose.x_m += l * p.cos_hdg;
+        out.pose.y_m += l * p.sin_hdg;
+      }
+      out.t_m = -(x - out.pose.x_m) * out.pose.sin_hdg + (y - out.pose.y_m) * out.pose.cos_hdg;
       out.found = true;
       return true;
     }
@@ -194,8 +237,7 @@ Station ReferenceLineProjection::golden(double x, double y, double s_lo, double 
   Station out;
   out.s_m = 0.5 * (a + b);
   out.pose = line_.pose(out.s_m, element);
-  out.t_m = -(x - out.pose.x_m) * std::sin(out.pose.hdg_rad) +
-            (y - out.pose.y_m) * std::cos(out.pose.hdg_rad);
+  out.t_m = -(x - out.pose.x_m) * out.pose.sin_hdg + (y - out.pose.y_m) * out.pose.cos_hdg;
   out.found = true;
   return out;
 }

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -12,12 +13,22 @@ namespace rig::model::road {
 
 namespace {
 
-constexpr double kSpiralKnotStepMax_m = 2.0;
-constexpr double kPoly3KnotStep_m = 1.0;
+constexpr double kKnotStepMax_m = 0.5;
+constexpr double kKnotTurnMax_rad = 0.1;  // heading change between knots (spiral, poly3)
 constexpr int kMaxKnots = 1'000'000;
+constexpr double kUnknownRate = std::numeric_limits<double>::infinity();
 
 /// sin(x) / x, exact near 0 (the arc's chord over its length, halved angle).
 double sinc(double x) noexcept { return std::abs(x) < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x; }
+
+/// cos and sin of a small angle: their series up to x^9 (error below 3e-17 for |x| <= 0.1),
+/// the exact functions beyond.
+Eigen::Vector2d cos_sin(double x) noexcept {
+  if (std::abs(x) > 0.1) return {std::cos(x), std::sin(x)};
+  const double x2 = x * x;
+  return {1.0 - x2 / 2.0 * (1.0 - x2 / 12.0 * (1.0 - x2 / 30.0 * (1.0 - x2 / 56.0))),
+          x * (1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0))))};
+}
 
 double cubic(double a, double b, double c, double d, double p) noexcept {
   return a + p * (b + p * (c + p * d));
@@ -28,46 +39,27 @@ double cubic_slope(double b, double c, double d, double p) noexcept {
 double cubic_curve(double c, double d, double p) noexcept { return 2.0 * c + 6.0 * d * p; }
 
 bool finite_geometry(const OpenDriveGeometry& g) {
-  for (const double v : {g.s_m,
-                         g.x_m,
-                         g.y_m,
-                         g.hdg_rad,
-                         g.length_m,
-                         g.curvature_1pm,
-                         g.curv_start_1pm,
-                         g.curv_end_1pm,
-                         g.a,
-                         g.b,
-                         g.c,
-                         g.d,
-                         g.au,
-                         g.bu,
-                         g.cu,
-                         g.du,
-                         g.av,
-                         g.bv,
-                         g.cv,
-                         g.dv}) {
+  for (const double v : {g.s_m, g.x_m, g.y_m, g.hdg_rad, g.length_m, g.curvature_1pm,
+                         g.curv_start_1pm, g.curv_end_1pm, g.a, g.b, g.c, g.d, g.au, g.bu, g.cu,
+                         g.du, g.av, g.bv, g.cv, g.dv}) {
     if (!std::isfinite(v)) return false;
   }
   return true;
 }
 
-/// Arc length of the poly3 v(u) from u0 to u1: the integral of sqrt(1 + v'(u)^2).
-double poly3_arc(const OpenDriveGeometry& g, double u0, double u1) noexcept {
-  return gauss_legendre6(u0, u1, [&g](double u) {
-    const double slope = cubic_slope(g.b, g.c, g.d, u);
-    return std::sqrt(1.0 + slope * slope);
-  });
+double poly3_speed(const OpenDriveGeometry& g, double u) noexcept {
+  const double slope = cubic_slope(g.b, g.c, g.d, u);
+  return std::sqrt(1.0 + slope * slope);
 }
 
-/// The u at which the poly3's arc length from u0 reaches `length` (Newton on the arc length).
-double poly3_u_at(const OpenDriveGeometry& g, double u0, double length) noexcept {
-  double slope = cubic_slope(g.b, g.c, g.d, u0);
-  double u = u0 + length / std::sqrt(1.0 + slope * slope);
+/// The u at which the poly3's arc length from u0 reaches `length` (Newton on the arc length,
+/// whose derivative is sqrt(1 + v'^2)); `six` picks the 6-point rule (knots) over the 3-point.
+double poly3_u_at(const OpenDriveGeometry& g, double u0, double length, bool six) noexcept {
+  auto speed = [&g](double u) { return poly3_speed(g, u); };
+  double u = u0 + length / speed(u0);
   for (int it = 0; it < 8; ++it) {
-    slope = cubic_slope(g.b, g.c, g.d, u);
-    const double step = (poly3_arc(g, u0, u) - length) / std::sqrt(1.0 + slope * slope);
+    const double arc = six ? gauss_legendre6(u0, u, speed) : gauss_legendre3(u0, u, speed);
+    const double step = (arc - length) / speed(u);
     u -= step;
     if (std::abs(step) < 1e-13 * (1.0 + std::abs(u))) break;
   }
@@ -113,11 +105,13 @@ void OpenDriveReferenceLine::add_knots(Element& e, double span_m) {
   const OpenDriveGeometry& g = e.g;
   if (g.kind == OpenDriveGeometryKind::kSpiral) {
     const double k_max = std::max(std::abs(g.curv_start_1pm), std::abs(g.curv_end_1pm));
-    // heading change over a knot step at most 0.25 rad (the quadrature is then exact to ~1e-15)
-    e.knot_step_m = std::min({kSpiralKnotStepMax_m, 0.25 / std::max(k_max, 1e-12),
-                              0.5 / std::sqrt(std::max(std::abs(e.spiral_rate), 1e-24))});
+    // the turn over a knot step: k_max h + rate h^2 / 2 <= kKnotTurnMax_rad
+    e.knot_step_m =
+        std::min({kKnotStepMax_m, kKnotTurnMax_rad / std::max(k_max, 1e-12),
+                  std::sqrt(kKnotTurnMax_rad / std::max(std::abs(e.spiral_rate), 1e-24))});
   } else if (g.kind == OpenDriveGeometryKind::kPoly3) {
-    e.knot_step_m = kPoly3KnotStep_m;
+    const double v2 = std::abs(g.c) + 3.0 * std::abs(g.d) * span_m;  // bounds |v''| / 2
+    e.knot_step_m = std::min(kKnotStepMax_m, kKnotTurnMax_rad / std::max(2.0 * v2, 1e-12));
   } else {
     return;
   }
@@ -128,26 +122,47 @@ void OpenDriveReferenceLine::add_knots(Element& e, double span_m) {
   e.first_knot = static_cast<int>(knots_.size());
   e.knot_count = static_cast<int>(intervals) + 1;
   if (g.kind == OpenDriveGeometryKind::kSpiral) {
-    Knot k{g.x_m, g.y_m};
-    knots_.push_back(k);
-    for (int i = 1; i < e.knot_count; ++i) {
-      const double s0 = (i - 1) * e.knot_step_m;
-      const Eigen::Vector2d d = gauss_legendre6(s0, s0 + e.knot_step_m, [&](double ds) {
-        const double th = g.hdg_rad + ds * (g.curv_start_1pm + 0.5 * e.spiral_rate * ds);
-        return Eigen::Vector2d(std::cos(th), std::sin(th));
-      });
-      k.x += d.x();
-      k.y += d.y();
-      knots_.push_back(k);
-    }
+    add_spiral_knots(e);
   } else {
-    double u = 0;
-    knots_.push_back({u, 0});
-    for (int i = 1; i < e.knot_count; ++i) {
-      u = poly3_u_at(g, u, e.knot_step_m);
-      knots_.push_back({u, 0});
-    }
+    add_poly3_knots(e);
   }
+}
+
+void OpenDriveReferenceLine::add_spiral_knots(const Element& e) {
+  const OpenDriveGeometry& g = e.g;
+  auto heading = [&](double ds) {
+    return g.hdg_rad + ds * (g.curv_start_1pm + 0.5 * e.spiral_rate * ds);
+  };
+  double x = g.x_m, y = g.y_m;
+  for (int i = 0; i < e.knot_count; ++i) {
+    const double s0 = i * e.knot_step_m;
+    if (i > 0) {
+      const Eigen::Vector2d d = gauss_legendre6(s0 - e.knot_step_m, s0, [&](double ds) {
+        return Eigen::Vector2d(std::cos(heading(ds)), std::sin(heading(ds)));
+      });
+      x += d.x();
+      y += d.y();
+    }
+    const double h = heading(s0);
+    knots_.push_back({x, y, h, std::cos(h), std::sin(h)});
+  }
+}
+
+void OpenDriveReferenceLine::add_poly3_knots(const Element& e) {
+  double u = 0;
+  knots_.push_back({u});
+  for (int i = 1; i < e.knot_count; ++i) {
+    u = poly3_u_at(e.g, u, e.knot_step_m, true);
+    knots_.push_back({u});
+  }
+}
+
+bool OpenDriveReferenceLine::in_element(double s_m, int element) const noexcept {
+  const int n = element_count();
+  if (element < 0) return s_m < start_s_;
+  if (element >= n) return s_m > end_s_;
+  return elements_[element].g.s_m <= s_m && s_m <= end_s_ &&
+         (element + 1 == n || s_m < elements_[element + 1].g.s_m);
 }
 
 int OpenDriveReferenceLine::find(double s_m, int hint) const noexcept {
@@ -180,10 +195,11 @@ ReferencePose OpenDriveReferenceLine::pose(double s_m, int& element) const noexc
 
 ReferencePose OpenDriveReferenceLine::straight(const ReferencePose& from, double ds_m) noexcept {
   ReferencePose p = from;
-  p.x_m += ds_m * std::cos(from.hdg_rad);
-  p.y_m += ds_m * std::sin(from.hdg_rad);
+  p.x_m += ds_m * from.cos_hdg;
+  p.y_m += ds_m * from.sin_hdg;
   p.curvature_1pm = 0;
   p.speed = 1;
+  p.curvature_rate = 0;
   return p;
 }
 
@@ -191,15 +207,10 @@ ReferencePose OpenDriveReferenceLine::local(const Element& e, double ds_m) const
   const OpenDriveGeometry& g = e.g;
   switch (g.kind) {
     case OpenDriveGeometryKind::kLine:
-      return {g.x_m + ds_m * e.cos_hdg, g.y_m + ds_m * e.sin_hdg, g.hdg_rad, 0.0, 1.0};
-    case OpenDriveGeometryKind::kArc: {
-      // the chord 2 sin(k ds / 2) / k along the mean heading hdg + k ds / 2
-      const double half = 0.5 * g.curvature_1pm * ds_m;
-      const double chord = ds_m * sinc(half);
-      const double mean = g.hdg_rad + half;
-      return {g.x_m + chord * std::cos(mean), g.y_m + chord * std::sin(mean),
-              g.hdg_rad + 2.0 * half, g.curvature_1pm, 1.0};
-    }
+      return {g.x_m + ds_m * e.cos_hdg, g.y_m + ds_m * e.sin_hdg, g.hdg_rad, e.cos_hdg, e.sin_hdg,
+              0.0, 1.0, 0.0};
+    case OpenDriveGeometryKind::kArc:
+      return arc(e, ds_m);
     case OpenDriveGeometryKind::kSpiral:
       return spiral(e, ds_m);
     case OpenDriveGeometryKind::kPoly3:
@@ -210,31 +221,57 @@ ReferencePose OpenDriveReferenceLine::local(const Element& e, double ds_m) const
   return {};
 }
 
-ReferencePose OpenDriveReferenceLine::spiral(const Element& e, double ds_m) const noexcept {
+ReferencePose OpenDriveReferenceLine::arc(const Element& e, double ds_m) noexcept {
+  // the chord 2 sin(k ds / 2) / k along the mean heading hdg + k ds / 2; one sine and cosine
   const OpenDriveGeometry& g = e.g;
-  auto heading = [&](double ds) {
-    return g.hdg_rad + ds * (g.curv_start_1pm + 0.5 * e.spiral_rate * ds);
-  };
-  const int k = std::clamp(static_cast<int>(ds_m / e.knot_step_m), 0, e.knot_count - 1);
+  const double half = 0.5 * g.curvature_1pm * ds_m;
+  const double ch = std::cos(half), sh = std::sin(half);
+  const double chord = ds_m * sinc(half);
+  const double cm = e.cos_hdg * ch - e.sin_hdg * sh, sm = e.sin_hdg * ch + e.cos_hdg * sh;
+  return {g.x_m + chord * cm, g.y_m + chord * sm,   g.hdg_rad + 2.0 * half,
+          cm * ch - sm * sh,  sm * ch + cm * sh,    g.curvature_1pm,
+          1.0,                0.0};
+}
+
+ReferencePose OpenDriveReferenceLine::spiral(const Element& e, double ds_m) const noexcept {
+  // from the nearest knot k: heading hdg_k + psi(d), psi(d) = kappa_k d + rate d^2 / 2, small
+  const OpenDriveGeometry& g = e.g;
+  const int k = std::clamp(static_cast<int>(ds_m / e.knot_step_m + 0.5), 0,
+                           e.knot_count - 1);
   const Knot& knot = knots_[static_cast<std::size_t>(e.first_knot + k)];
-  const Eigen::Vector2d d = gauss_legendre6(k * e.knot_step_m, ds_m, [&](double ds) {
-    const double th = heading(ds);
-    return Eigen::Vector2d(std::cos(th), std::sin(th));
-  });
-  return {knot.x + d.x(), knot.y + d.y(), heading(ds_m), g.curv_start_1pm + e.spiral_rate * ds_m,
-          1.0};
+  const double kappa_k = g.curv_start_1pm + e.spiral_rate * k * e.knot_step_m;
+  const double d = ds_m - k * e.knot_step_m;
+  auto psi = [&](double sigma) { return sigma * (kappa_k + 0.5 * e.spiral_rate * sigma); };
+  const Eigen::Vector2d i = gauss_legendre3(0.0, d, [&](double sigma) { return cos_sin(psi(sigma)); });
+  const Eigen::Vector2d turn = cos_sin(psi(d));
+  return {knot.x + knot.cos_hdg * i.x() - knot.sin_hdg * i.y(),
+          knot.y + knot.sin_hdg * i.x() + knot.cos_hdg * i.y(),
+          knot.hdg + psi(d),
+          knot.cos_hdg * turn.x() - knot.sin_hdg * turn.y(),
+          knot.sin_hdg * turn.x() + knot.cos_hdg * turn.y(),
+          kappa_k + e.spiral_rate * d,
+          1.0,
+          e.spiral_rate};
 }
 
 ReferencePose OpenDriveReferenceLine::poly3(const Element& e, double ds_m) const noexcept {
   const OpenDriveGeometry& g = e.g;
-  const int k = std::clamp(static_cast<int>(ds_m / e.knot_step_m), 0, e.knot_count - 1);
-  const double u =
-      poly3_u_at(g, knots_[static_cast<std::size_t>(e.first_knot + k)].x, ds_m - k * e.knot_step_m);
+  const int k = std::clamp(static_cast<int>(ds_m / e.knot_step_m + 0.5), 0,
+                           e.knot_count - 1);
+  const double u = poly3_u_at(g, knots_[static_cast<std::size_t>(e.first_knot + k)].x,
+                              ds_m - k * e.knot_step_m, false);
   const double v = cubic(g.a, g.b, g.c, g.d, u);
   const double slope = cubic_slope(g.b, g.c, g.d, u);
   const double w = 1.0 + slope * slope;
-  return {g.x_m + u * e.cos_hdg - v * e.sin_hdg, g.y_m + u * e.sin_hdg + v * e.cos_hdg,
-          g.hdg_rad + std::atan(slope), cubic_curve(g.c, g.d, u) / (w * std::sqrt(w)), 1.0};
+  const double r = 1.0 / std::sqrt(w);  // the local tangent (1, v') / sqrt(w), rotated by hdg
+  return {g.x_m + u * e.cos_hdg - v * e.sin_hdg,
+          g.y_m + u * e.sin_hdg + v * e.cos_hdg,
+          g.hdg_rad + std::atan(slope),
+          (e.cos_hdg - slope * e.sin_hdg) * r,
+          (e.sin_hdg + slope * e.cos_hdg) * r,
+          cubic_curve(g.c, g.d, u) * r / w,
+          1.0,
+          kUnknownRate};
 }
 
 ReferencePose OpenDriveReferenceLine::param_poly3(const Element& e, double ds_m) noexcept {
@@ -248,10 +285,16 @@ ReferencePose OpenDriveReferenceLine::param_poly3(const Element& e, double ds_m)
   const double ddv = cubic_curve(g.cv, g.dv, p);
   const double q = du * du + dv * dv;
   const double rate = std::sqrt(q);
+  const double r = rate > 0 ? 1.0 / rate : 0.0;
   // curvature of a parametric plane curve: (u' v'' - v' u'') / (u'^2 + v'^2)^(3/2)
-  const double curvature = q > 0 ? (du * ddv - dv * ddu) / (q * rate) : 0.0;
-  return {g.x_m + u * e.cos_hdg - v * e.sin_hdg, g.y_m + u * e.sin_hdg + v * e.cos_hdg,
-          g.hdg_rad + std::atan2(dv, du), curvature, rate * e.p_per_s};
+  return {g.x_m + u * e.cos_hdg - v * e.sin_hdg,
+          g.y_m + u * e.sin_hdg + v * e.cos_hdg,
+          g.hdg_rad + std::atan2(dv, du),
+          rate > 0 ? (du * e.cos_hdg - dv * e.sin_hdg) * r : e.cos_hdg,
+          rate > 0 ? (du * e.sin_hdg + dv * e.cos_hdg) * r : e.sin_hdg,
+          (du * ddv - dv * ddu) * r * r * r,
+          rate * e.p_per_s,
+          kUnknownRate};
 }
 
 }  // namespace rig::model::road

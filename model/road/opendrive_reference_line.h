@@ -9,8 +9,10 @@
 /// along the end's heading (the rule model/road/DESIGN.md states for OpenDRIVE).
 ///
 /// Constant after construction; pose() is noexcept and allocation-free. The clothoid's Fresnel
-/// integrals and the poly3's arc length are integrated by 6-point Gauss-Legendre from knots
-/// (at most 2 m apart, computed once), so a query costs one short quadrature, not a march.
+/// integrals and the poly3's arc length are integrated once, by 6-point Gauss-Legendre, to knots
+/// at most 0.5 m apart (and close enough that the heading turns at most 0.1 rad between them); a
+/// query integrates from its nearest knot by 3-point Gauss-Legendre, the clothoid's small turn
+/// angles by their sine and cosine series: no trigonometric call on a spiral.
 
 #include <vector>
 
@@ -23,8 +25,13 @@ struct ReferencePose {
   double x_m = 0;
   double y_m = 0;
   double hdg_rad = 0;        ///< tangent heading (from +x, counter-clockwise)
+  double cos_hdg = 1;        ///< its cosine and sine (the unit tangent)
+  double sin_hdg = 0;
   double curvature_1pm = 0;  ///< > 0: turning left
   double speed = 1;          ///< |dP/ds|: 1 where s is arc length (all but paramPoly3)
+  /// d curvature / ds [1/m^2]: 0 on lines and arcs (a circle is exact there), the clothoid's
+  /// rate, infinity where it is not at hand (poly3, paramPoly3)
+  double curvature_rate = 0;
 };
 
 class OpenDriveReferenceLine {
@@ -37,6 +44,9 @@ class OpenDriveReferenceLine {
   /// (any value works; it is updated to the element used, -1 and the count mean the straight
   /// extensions before and after).
   [[nodiscard]] ReferencePose pose(double s_m, int& element) const noexcept;
+
+  /// Whether station s lies in `element` (as pose() numbers them, the extensions included).
+  [[nodiscard]] bool in_element(double s_m, int element) const noexcept;
 
   [[nodiscard]] double start_s_m() const noexcept { return start_s_; }
   /// Where the last element ends (its s + length).
@@ -55,14 +65,17 @@ class OpenDriveReferenceLine {
     int knot_count = 0;
     double knot_step_m = 1;
   };
-  /// spiral: (x, y) at the knot; poly3: u at the knot (in x).
+  /// spiral: the pose at the knot; poly3: u at the knot (in x).
   struct Knot {
-    double x = 0, y = 0;
+    double x = 0, y = 0, hdg = 0, cos_hdg = 1, sin_hdg = 0;
   };
 
   void add_knots(Element& e, double span_m);
+  void add_spiral_knots(const Element& e);
+  void add_poly3_knots(const Element& e);
   [[nodiscard]] int find(double s_m, int hint) const noexcept;
   [[nodiscard]] ReferencePose local(const Element& e, double ds_m) const noexcept;
+  [[nodiscard]] static ReferencePose arc(const Element& e, double ds_m) noexcept;
   [[nodiscard]] ReferencePose spiral(const Element& e, double ds_m) const noexcept;
   [[nodiscard]] ReferencePose poly3(const Element& e, double ds_m) const noexcept;
   [[nodiscard]] static ReferencePose param_poly3(const Element& e, double ds_m) noexcept;

@@ -9,8 +9,7 @@ namespace rig::model::road {
 OpenDriveSurface::OpenDriveSurface(const OpenDriveRoad& road, const Placement& placement)
     : line_(road.plan_view),
       projection_(line_),
-      elevation_(road.elevation, line_.start_s_m(), line_.end_s_m()),
-      superelevation_(road.superelevation, line_.start_s_m(), line_.end_s_m()) {
+      profile_(road.elevation, road.superelevation, line_.start_s_m(), line_.end_s_m()) {
   if (!placement.given) return;
   const double u = std::isnan(placement.u_m) ? line_.start_s_m() : placement.u_m;
   for (const double v :
@@ -22,11 +21,10 @@ OpenDriveSurface::OpenDriveSurface(const OpenDriveRoad& road, const Placement& p
   const double turn = placement.heading_rad - p.hdg_rad;
   cos_turn_ = std::cos(turn);
   sin_turn_ = std::sin(turn);
-  file_origin_ = {p.x_m - placement.v_m * std::sin(p.hdg_rad),
-                  p.y_m + placement.v_m * std::cos(p.hdg_rad)};
+  file_origin_ = {p.x_m - placement.v_m * p.sin_hdg, p.y_m + placement.v_m * p.cos_hdg};
   road_origin_ = {placement.x_m, placement.y_m};
-  const double z_file =
-      elevation_.at(u).value + placement.v_m * std::tan(superelevation_.at(u).value);
+  const CrossSection section = cross_section(u);
+  const double z_file = section.elevation_m + placement.v_m * section.tan_superelevation;
   z_shift_m_ = placement.z_m - z_file;
 }
 
@@ -50,7 +48,7 @@ Station OpenDriveSurface::station(double x_m, double y_m, SurfaceHint& hint) con
 Eigen::Vector2d OpenDriveSurface::position(double s_m, double t_m) const noexcept {
   int element = -1;
   const ReferencePose p = line_.pose(s_m, element);
-  return to_road({p.x_m - t_m * std::sin(p.hdg_rad), p.y_m + t_m * std::cos(p.hdg_rad)});
+  return to_road({p.x_m - t_m * p.sin_hdg, p.y_m + t_m * p.cos_hdg});
 }
 
 SurfaceHeight OpenDriveSurface::height(double x_m, double y_m, SurfaceHint& hint) const noexcept {
@@ -59,20 +57,19 @@ SurfaceHeight OpenDriveSurface::height(double x_m, double y_m, SurfaceHint& hint
     const double nan = std::nan("");
     return {nan, nan, nan};
   }
-  const ProfileValue e = elevation_.at(st.s_m);
-  const ProfileValue phi = superelevation_.at(st.s_m);
-  const double tan_phi = std::tan(phi.value);
-  const double cos_phi = std::cos(phi.value);
+  const CrossSection cs = profile_.at(st.s_m, hint.j);
+  const double tan_phi = cs.tan_superelevation;
+  const double cos_phi = cs.cos_superelevation;
   const ReferencePose& p = st.pose;
   // dz/ds at fixed t, dz/dt at fixed s; grad s = T / (|C'| (1 - t kappa)), grad t = n
-  const double dz_ds = e.slope + st.t_m * phi.slope / (cos_phi * cos_phi);
+  const double dz_ds = cs.elevation_slope + st.t_m * cs.superelevation_rate / (cos_phi * cos_phi);
   // (1 - t kappa) > 0.1 wherever Newton found the foot; the clamp guards the golden-section
   // fallback's feet near a centre of curvature
   const double ds_scale = dz_ds / (p.speed * std::max(1.0 - st.t_m * p.curvature_1pm, 0.1));
-  const double c = std::cos(p.hdg_rad), s = std::sin(p.hdg_rad);
+  const double c = p.cos_hdg, s = p.sin_hdg;
   const double gx = ds_scale * c - tan_phi * s;  // file frame
   const double gy = ds_scale * s + tan_phi * c;
-  return {e.value + st.t_m * tan_phi + z_shift_m_, cos_turn_ * gx - sin_turn_ * gy,
+  return {cs.elevation_m + st.t_m * tan_phi + z_shift_m_, cos_turn_ * gx - sin_turn_ * gy,
           sin_turn_ * gx + cos_turn_ * gy};
 }
 

@@ -28,8 +28,8 @@
 #include "model/road/opendrive_projection.h"
 #include "model/road/opendrive_reference_line.h"
 #include "model/road/opendrive_road.h"
-#include "model/road/piecewise_cubic.h"
 #include "model/road/placement.h"
+#include "model/road/road_profile.h"
 #include "model/road/surface.h"
 
 namespace rig::model::road {
@@ -38,6 +38,9 @@ class OpenDriveSurface final : public Surface {
  public:
   /// Throws std::invalid_argument for a plan view the reference line refuses (see there) or a
   /// placement with a non-finite number.
+  ///
+  /// The hint (model/road/surface.h): i is the reference line's element + 1 (-1: no idea), s_m
+  /// the station, j the profile's segment.
   OpenDriveSurface(const OpenDriveRoad& road, const Placement& placement);
 
   [[nodiscard]] SurfaceHeight height(double x_m, double y_m,
@@ -50,9 +53,10 @@ class OpenDriveSurface final : public Surface {
 
   [[nodiscard]] const OpenDriveReferenceLine& reference_line() const noexcept { return line_; }
   [[nodiscard]] const ReferenceLineProjection& projection() const noexcept { return projection_; }
-  [[nodiscard]] ProfileValue elevation(double s_m) const noexcept { return elevation_.at(s_m); }
-  [[nodiscard]] ProfileValue superelevation(double s_m) const noexcept {
-    return superelevation_.at(s_m);
+  /// The elevation and superelevation at s (file heights, without the placement's shift).
+  [[nodiscard]] CrossSection cross_section(double s_m) const noexcept {
+    int segment = -1;
+    return profile_.at(s_m, segment);
   }
 
  private:
@@ -62,8 +66,7 @@ class OpenDriveSurface final : public Surface {
 
   OpenDriveReferenceLine line_;
   ReferenceLineProjection projection_;  // refers to line_ (declared after it)
-  PiecewiseCubic elevation_;
-  PiecewiseCubic superelevation_;
+  RoadProfile profile_;
   // road frame = rotation(turn_) * (file - file_origin_) + road_origin_; z shifted by z_shift_
   double cos_turn_ = 1, sin_turn_ = 0;
   Eigen::Vector2d file_origin_ = Eigen::Vector2d::Zero();
