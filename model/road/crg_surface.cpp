@@ -144,8 +144,8 @@ CrgSurface::AxisPoint CrgSurface::u_axis(double u_m) const noexcept {
 }
 
 int CrgSurface::v_cell_of(double v_m, int v_cell) const noexcept {
-  if (v_equal_) return std::clamp(static_cast<int>(std::floor((v_m - v_.front()) / dv_m_)), 0,
-                                  nv_ - 2);
+  if (v_equal_)
+    return std::clamp(static_cast<int>(std::floor((v_m - v_.front()) / dv_m_)), 0, nv_ - 2);
   if (v_cell < 0 || v_cell > nv_ - 2) {
     const auto it = std::upper_bound(v_.begin() + 1, v_.end() - 1, v_m);
     return static_cast<int>(it - v_.begin()) - 1;

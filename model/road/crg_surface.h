@@ -80,9 +80,9 @@ class CrgSurface final : public Surface {
   double dv_m_ = 1;
   int nv_ = 0;
   int nu_ = 0;
-  std::vector<float> z_;        ///< the grid, NaN cells filled, SCALE_Z_GRID applied
-  std::vector<double> z_ref_;   ///< reference line height per cross section
-  std::vector<double> bank_;    ///< banking per cross section
+  std::vector<float> z_;       ///< the grid, NaN cells filled, SCALE_Z_GRID applied
+  std::vector<double> z_ref_;  ///< reference line height per cross section
+  std::vector<double> bank_;   ///< banking per cross section
   // placement: p_file = R(-rot) (p_world - t) + p_ref, z_world = z_file + dz
   double cos_ = 1;
   double sin_ = 0;

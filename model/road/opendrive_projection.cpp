@@ -1,5 +1,7 @@
 #include "model/road/opendrive_projection.h"
 
+#include "model/road/small_angle.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -148,22 +150,41 @@ double atan_ratio(double x) noexcept {
 /// The pose moved by arc length `l` along its osculating circle (exact on lines and arcs).
 ReferencePose along_circle(const ReferencePose& p, double l) noexcept {
   const double turn = p.curvature_1pm * l;
+  const CosSin h = cos_sin(0.5 * turn);
+  const double chord = std::abs(turn) > 1e-4 ? 2.0 * h.sin / p.curvature_1pm : l;
+  const double cm = p.cos_hdg * h.cos - p.sin_hdg * h.sin;
+  const double sm = p.sin_hdg * h.cos + p.cos_hdg * h.sin;
   ReferencePose q = p;
-  if (turn == 0) {
-    q.x_m += l * p.cos_hdg;
-    q.y_m += l * p.sin_hdg;
-    return q;
-  }
-  const double ch = std::cos(0.5 * turn), sh = std::sin(0.5 * turn);
-  const double chord = std::abs(turn) > 1e-4 ? 2.0 * sh / p.curvature_1pm : l;
-  const double cm = p.cos_hdg * ch - p.sin_hdg * sh, sm = p.sin_hdg * ch + p.cos_hdg * sh;
   q.x_m += chord * cm;
   q.y_m += chord * sm;
   q.hdg_rad += turn;
-  q.cos_hdg = cm * ch - sm * sh;
-  q.sin_hdg = sm * ch + cm * sh;
+  q.cos_hdg = cm * h.cos - sm * h.sin;
+  q.sin_hdg = sm * h.cos + cm * h.sin;
   q.curvature_1pm += p.curvature_rate * l;
   return q;
+}
+
+/// The circle's foot corrected onto the clothoid: there the tangent is turned by
+/// eps = rate l^2 / 2 and the line lies rate l^3 / 6 further along the normal than the circle;
+/// the foot moves on by the along-distance this leaves (to first order: its error is of
+/// second order in eps).
+void onto_clothoid(double x, double y, double l, ReferencePose& q, double& s) noexcept {
+  const double eps = 0.5 * q.curvature_rate * l * l;
+  const double off = q.curvature_rate * l * l * l / 6.0;
+  q.x_m -= off * q.sin_hdg;
+  q.y_m += off * q.cos_hdg;
+  q.hdg_rad += eps;
+  const double c = q.cos_hdg - eps * q.sin_hdg, sn = q.sin_hdg + eps * q.cos_hdg;
+  const double r = 1.0 / std::sqrt(c * c + sn * sn);
+  q.cos_hdg = c * r;
+  q.sin_hdg = sn * r;
+  const double dx = x - q.x_m, dy = y - q.y_m;
+  const double t = -dx * q.sin_hdg + dy * q.cos_hdg;
+  const double d = (dx * q.cos_hdg + dy * q.sin_hdg) / (1.0 - t * q.curvature_1pm);
+  q.x_m += d * q.cos_hdg;
+  q.y_m += d * q.sin_hdg;
+  q.hdg_rad += d * q.curvature_1pm;
+  s += d;
 }
 
 }  // namespace
@@ -183,15 +204,19 @@ bool ReferenceLineProjection::newton(double x, double y, double s, int& element,
     const double l = along / bend * atan_ratio(p.curvature_1pm * along / bend);
     const double step = l / p.speed;
     const double rate = std::abs(p.curvature_rate);
+    // what the step leaves: 0 on lines and arcs; on a clothoid after its correction about
+    // (|t| rate l^2)^2; elsewhere Newton's next error, about kappa step^2
+    const double clothoid = (std::abs(t) + std::abs(l)) * rate * l * l;
     const double left =
         rate == 0 ? 0.0
-                  : std::min(0.5 * (std::abs(t) + std::abs(l)) * rate * l * l,
+                  : std::min(clothoid < 1e-4 ? clothoid * clothoid : clothoid,
                              step * step * (std::abs(p.curvature_1pm) + kCurvatureFloor_1pm));
     if (left < kConverged_m && line_.in_element(s + step, element)) {
       out.s_m = s + step;
       out.pose = p;
       if (p.speed == 1.0) {
         out.pose = along_circle(p, l);
+        if (rate > 0 && std::isfinite(rate)) onto_clothoid(x, y, l, out.pose, out.s_m);
       } else {  // a paramPoly3, the step tiny here: first order along the tangent
         out.pose.x_m += l * p.cos_hdg;
         out.pose.y_m += l * p.sin_hdg;

@@ -6,8 +6,10 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "model/road/gauss_legendre.h"
+#include "model/road/small_angle.h"
 
 namespace rig::model::road {
 
@@ -21,15 +23,6 @@ constexpr double kUnknownRate = std::numeric_limits<double>::infinity();
 /// sin(x) / x, exact near 0 (the arc's chord over its length, halved angle).
 double sinc(double x) noexcept { return std::abs(x) < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x; }
 
-/// cos and sin of a small angle: their series up to x^9 (error below 3e-17 for |x| <= 0.1),
-/// the exact functions beyond.
-Eigen::Vector2d cos_sin(double x) noexcept {
-  if (std::abs(x) > 0.1) return {std::cos(x), std::sin(x)};
-  const double x2 = x * x;
-  return {1.0 - x2 / 2.0 * (1.0 - x2 / 12.0 * (1.0 - x2 / 30.0 * (1.0 - x2 / 56.0))),
-          x * (1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0))))};
-}
-
 double cubic(double a, double b, double c, double d, double p) noexcept {
   return a + p * (b + p * (c + p * d));
 }
@@ -39,9 +32,26 @@ double cubic_slope(double b, double c, double d, double p) noexcept {
 double cubic_curve(double c, double d, double p) noexcept { return 2.0 * c + 6.0 * d * p; }
 
 bool finite_geometry(const OpenDriveGeometry& g) {
-  for (const double v : {g.s_m, g.x_m, g.y_m, g.hdg_rad, g.length_m, g.curvature_1pm,
-                         g.curv_start_1pm, g.curv_end_1pm, g.a, g.b, g.c, g.d, g.au, g.bu, g.cu,
-                         g.du, g.av, g.bv, g.cv, g.dv}) {
+  for (const double v : {g.s_m,
+                         g.x_m,
+                         g.y_m,
+                         g.hdg_rad,
+                         g.length_m,
+                         g.curvature_1pm,
+                         g.curv_start_1pm,
+                         g.curv_end_1pm,
+                         g.a,
+                         g.b,
+                         g.c,
+                         g.d,
+                         g.au,
+                         g.bu,
+                         g.cu,
+                         g.du,
+                         g.av,
+                         g.bv,
+                         g.cv,
+                         g.dv}) {
     if (!std::isfinite(v)) return false;
   }
   return true;
@@ -207,8 +217,14 @@ ReferencePose OpenDriveReferenceLine::local(const Element& e, double ds_m) const
   const OpenDriveGeometry& g = e.g;
   switch (g.kind) {
     case OpenDriveGeometryKind::kLine:
-      return {g.x_m + ds_m * e.cos_hdg, g.y_m + ds_m * e.sin_hdg, g.hdg_rad, e.cos_hdg, e.sin_hdg,
-              0.0, 1.0, 0.0};
+      return {g.x_m + ds_m * e.cos_hdg,
+              g.y_m + ds_m * e.sin_hdg,
+              g.hdg_rad,
+              e.cos_hdg,
+              e.sin_hdg,
+              0.0,
+              1.0,
+              0.0};
     case OpenDriveGeometryKind::kArc:
       return arc(e, ds_m);
     case OpenDriveGeometryKind::kSpiral:
@@ -228,27 +244,42 @@ ReferencePose OpenDriveReferenceLine::arc(const Element& e, double ds_m) noexcep
   const double ch = std::cos(half), sh = std::sin(half);
   const double chord = ds_m * sinc(half);
   const double cm = e.cos_hdg * ch - e.sin_hdg * sh, sm = e.sin_hdg * ch + e.cos_hdg * sh;
-  return {g.x_m + chord * cm, g.y_m + chord * sm,   g.hdg_rad + 2.0 * half,
-          cm * ch - sm * sh,  sm * ch + cm * sh,    g.curvature_1pm,
-          1.0,                0.0};
+  return {g.x_m + chord * cm,
+          g.y_m + chord * sm,
+          g.hdg_rad + 2.0 * half,
+          cm * ch - sm * sh,
+          sm * ch + cm * sh,
+          g.curvature_1pm,
+          1.0,
+          0.0};
 }
 
 ReferencePose OpenDriveReferenceLine::spiral(const Element& e, double ds_m) const noexcept {
-  // from the nearest knot k: heading hdg_k + psi(d), psi(d) = kappa_k d + rate d^2 / 2, small
+  // from the nearest knot k: heading hdg_k + psi(d), psi(d) = kappa_k d + rate d^2 / 2 (small);
+  // the position adds the integral of (cos psi, sin psi) over [0, d] by 3-point Gauss-Legendre
   const OpenDriveGeometry& g = e.g;
-  const int k = std::clamp(static_cast<int>(ds_m / e.knot_step_m + 0.5), 0,
-                           e.knot_count - 1);
+  const int k = std::clamp(static_cast<int>(ds_m / e.knot_step_m + 0.5), 0, e.knot_count - 1);
   const Knot& knot = knots_[static_cast<std::size_t>(e.first_knot + k)];
   const double kappa_k = g.curv_start_1pm + e.spiral_rate * k * e.knot_step_m;
   const double d = ds_m - k * e.knot_step_m;
-  auto psi = [&](double sigma) { return sigma * (kappa_k + 0.5 * e.spiral_rate * sigma); };
-  const Eigen::Vector2d i = gauss_legendre3(0.0, d, [&](double sigma) { return cos_sin(psi(sigma)); });
-  const Eigen::Vector2d turn = cos_sin(psi(d));
-  return {knot.x + knot.cos_hdg * i.x() - knot.sin_hdg * i.y(),
-          knot.y + knot.sin_hdg * i.x() + knot.cos_hdg * i.y(),
-          knot.hdg + psi(d),
-          knot.cos_hdg * turn.x() - knot.sin_hdg * turn.y(),
-          knot.sin_hdg * turn.x() + knot.cos_hdg * turn.y(),
+  const double half_rate = 0.5 * e.spiral_rate;
+  const double half = 0.5 * d, dx = half * 0.7745966692414834;
+  double ix = 0, iy = 0;
+  for (const auto& [sigma, w] : {std::pair{half - dx, 5.0 / 9.0}, std::pair{half, 8.0 / 9.0},
+                                 std::pair{half + dx, 5.0 / 9.0}}) {
+    const CosSin c = cos_sin(sigma * (kappa_k + half_rate * sigma));
+    ix += w * c.cos;
+    iy += w * c.sin;
+  }
+  ix *= half;
+  iy *= half;
+  const double psi = d * (kappa_k + half_rate * d);
+  const CosSin turn = cos_sin(psi);
+  return {knot.x + knot.cos_hdg * ix - knot.sin_hdg * iy,
+          knot.y + knot.sin_hdg * ix + knot.cos_hdg * iy,
+          knot.hdg + psi,
+          knot.cos_hdg * turn.cos - knot.sin_hdg * turn.sin,
+          knot.sin_hdg * turn.cos + knot.cos_hdg * turn.sin,
           kappa_k + e.spiral_rate * d,
           1.0,
           e.spiral_rate};
@@ -256,8 +287,7 @@ ReferencePose OpenDriveReferenceLine::spiral(const Element& e, double ds_m) cons
 
 ReferencePose OpenDriveReferenceLine::poly3(const Element& e, double ds_m) const noexcept {
   const OpenDriveGeometry& g = e.g;
-  const int k = std::clamp(static_cast<int>(ds_m / e.knot_step_m + 0.5), 0,
-                           e.knot_count - 1);
+  const int k = std::clamp(static_cast<int>(ds_m / e.knot_step_m + 0.5), 0, e.knot_count - 1);
   const double u = poly3_u_at(g, knots_[static_cast<std::size_t>(e.first_knot + k)].x,
                               ds_m - k * e.knot_step_m, false);
   const double v = cubic(g.a, g.b, g.c, g.d, u);

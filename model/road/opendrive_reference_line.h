@@ -24,8 +24,8 @@ namespace rig::model::road {
 struct ReferencePose {
   double x_m = 0;
   double y_m = 0;
-  double hdg_rad = 0;        ///< tangent heading (from +x, counter-clockwise)
-  double cos_hdg = 1;        ///< its cosine and sine (the unit tangent)
+  double hdg_rad = 0;  ///< tangent heading (from +x, counter-clockwise)
+  double cos_hdg = 1;  ///< its cosine and sine (the unit tangent)
   double sin_hdg = 0;
   double curvature_1pm = 0;  ///< > 0: turning left
   double speed = 1;          ///< |dP/ds|: 1 where s is arc length (all but paramPoly3)

@@ -11,8 +11,9 @@ namespace {
 /// The record in force at s: the last one starting at or before it (a later one at the same s
 /// wins); none: 0.
 OpenDrivePolynomial record_at(const std::vector<OpenDrivePolynomial>& records, double s_m) {
-  const auto it = std::upper_bound(records.begin(), records.end(), s_m,
-                                   [](double s, const OpenDrivePolynomial& r) { return s < r.s_m; });
+  const auto it =
+      std::upper_bound(records.begin(), records.end(), s_m,
+                       [](double s, const OpenDrivePolynomial& r) { return s < r.s_m; });
   if (it == records.begin()) return {s_m, 0, 0, 0, 0};
   return *(it - 1);
 }

@@ -18,9 +18,9 @@ namespace rig::model::road {
 
 struct CrossSection {
   double elevation_m = 0;
-  double elevation_slope = 0;       ///< d elevation / ds
+  double elevation_slope = 0;  ///< d elevation / ds
   double superelevation_rad = 0;
-  double superelevation_rate = 0;   ///< d superelevation / ds [rad/m]
+  double superelevation_rate = 0;  ///< d superelevation / ds [rad/m]
   double tan_superelevation = 0;
   double cos_superelevation = 1;
 };
@@ -37,8 +37,8 @@ class RoadProfile {
 
  private:
   struct Segment {
-    double s_m = 0;  ///< where it starts (the first: -infinity)
-    OpenDrivePolynomial elevation;       ///< all zero before the first record
+    double s_m = 0;                 ///< where it starts (the first: -infinity)
+    OpenDrivePolynomial elevation;  ///< all zero before the first record
     OpenDrivePolynomial superelevation;
     bool constant_superelevation = true;
     double tan_superelevation = 0, cos_superelevation = 1;
