@@ -18,7 +18,7 @@ using model::road::Surface;
 /// The ISO 8608 grid's bounds: its generation factors a coherence matrix of every long section
 /// pair per frequency (model/road/iso8608.h), so the long sections are few.
 constexpr int kMaxIsoLongSections = 201;
-constexpr double kMaxIsoCells = 4e7;
+constexpr double kMaxIsoCells = 2e7;
 
 // ---- hooks for the parts of issue 16 built on branch road-xodr (OpenDRIVE, obstacles,
 // friction zones): each reads its keys from [road] and returns its piece of the road.
