@@ -42,10 +42,41 @@ void reference_points(const CrgData& d, std::vector<double>& x, std::vector<doub
 }  // namespace
 
 CrgReferenceLine::CrgReferenceLine(const CrgData& data)
-    : u_first_m_(data.u_first_m), du_m_(data.u_increment_m) {
+    : u_first_m_(data.u_first_m),
+      v_first_m_(data.v_m.front()),
+      v_last_m_(data.v_m.back()),
+      du_m_(data.u_increment_m) {
   reference_points(data, node_x_, node_y_);
   build_segments();
+  start_clear_ = grid_behind_end(true);
+  end_clear_ = grid_behind_end(false);
 }
+
+bool CrgReferenceLine::grid_behind_end(bool first) const noexcept {
+  // the grid is the cross sections' edge points and the straight lines between them: it lies
+  // behind the end's cross section if every edge point does
+  const int last = segment_count() - 1;
+  const Segment& g = segments_[static_cast<std::size_t>(first ? 0 : last)];
+  const double ex = first ? node_x_m(0) : node_x_m(last + 1);
+  const double ey = first ? node_y_m(0) : node_y_m(last + 1);
+  const double tolerance = 1e-9 * (1 + du_m_ * (last + 1));
+  for (int i = 0; i <= last + 1; ++i) {
+    for (const double v : {v_first_m_, v_last_m_}) {
+      double x = 0;
+      double y = 0;
+      point(u_first_m_ + i * du_m_, v, x, y);
+      const double ahead = (x - ex) * g.tx + (y - ey) * g.ty;  // along the end's direction
+      if (first ? ahead < -tolerance : ahead > tolerance) return false;
+    }
+  }
+  return true;
+}
+
+bool CrgReferenceLine::beyond_the_ends(int k, const InSegment& s) const noexcept {
+  return (k == 0 && s.f < 0) || (k == segment_count() - 1 && s.f > 1);
+}
+
+
 
 void CrgReferenceLine::build_segments() {
   const std::size_t n = node_x_.size();
@@ -115,16 +146,25 @@ int CrgReferenceLine::walk(int k, double x_m, double y_m) const noexcept {
 
 int CrgReferenceLine::search(double x_m, double y_m) const noexcept {
   const int last = segment_count() - 1;
-  int best = -1;
-  double best_v = std::numeric_limits<double>::infinity();
+  int best_grid = -1;  // between the segment's cross sections and within the grid's width
+  int best = -1;       // any, the straight continuations included
+  double best_grid_v = std::numeric_limits<double>::infinity();
+  double best_v = best_grid_v;
   for (int k = 0; k <= last; ++k) {
     const InSegment s = in_segment(k, x_m, y_m);
-    const bool inside = (s.f >= 0 || k == 0) && (s.f <= 1 || k == last);
-    if (s.den > 0 && inside && std::abs(s.v) < best_v) {
+    const bool between = s.f >= 0 && s.f <= 1;
+    if (!(s.den > 0) || !(between || beyond_the_ends(k, s))) continue;
+    const double v = std::abs(s.v);
+    if (between && s.v >= v_first_m_ && s.v <= v_last_m_ && v < best_grid_v) {
+      best_grid = k;
+      best_grid_v = v;
+    }
+    if (v < best_v) {
       best = k;
-      best_v = std::abs(s.v);
+      best_v = v;
     }
   }
+  if (best_grid >= 0) return best_grid;
   if (best >= 0) return best;
   // nowhere regular (inside a curve beyond its centre): the segment of the nearest point
   double best_d = std::numeric_limits<double>::infinity();
@@ -165,8 +205,15 @@ CrgStation CrgReferenceLine::station(int k, double x_m, double y_m) const noexce
 }
 
 CrgStation CrgReferenceLine::locate(double x_m, double y_m, int& segment) const noexcept {
-  const int count = segment_count();
-  segment = (segment >= 0 && segment < count) ? walk(segment, x_m, y_m) : search(x_m, y_m);
+  if (segment >= 0 && segment < segment_count()) {
+    segment = walk(segment, x_m, y_m);
+    // a continuation beyond an end, but maybe on the grid elsewhere (a road bending back)
+    const InSegment s = in_segment(segment, x_m, y_m);
+    if (beyond_the_ends(segment, s) && !(segment == 0 && s.f < 0 ? start_clear_ : end_clear_))
+      segment = search(x_m, y_m);
+  } else {
+    segment = search(x_m, y_m);
+  }
   return station(segment, x_m, y_m);
 }
 

@@ -10,8 +10,13 @@
 ///   p(f, v) = P_k + v m'_k + f (P_k+1 + v m'_k+1 - P_k - v m'_k),   u = u_k + f du,
 /// so v is the distance from the segment (v = (p - P_k) . n_k) and f follows in closed form.
 /// Before the first / beyond the last point the line continues straight along its end
-/// segment (REFLINE_CONTINUATION = 0). Constant after construction; locate() is noexcept and
-/// allocation-free and walks from the probe's last segment.
+/// segment (REFLINE_CONTINUATION = 0). Where several places fit a point (a road that bends back
+/// near itself), the one whose grid holds it wins: a segment with the point between its cross
+/// sections and within the grid's width, the nearest such (least |v|); else the nearest of all,
+/// the straight continuations included. Constant after construction; locate() is noexcept and
+/// allocation-free and walks from the probe's last segment (a rolling wheel costs a step); it
+/// searches all segments only without a hint, or when the walk ends on a continuation beyond an
+/// end across whose last cross section parts of the grid lie (a road that bends back).
 
 #include <vector>
 
@@ -76,8 +81,16 @@ class CrgReferenceLine {
   [[nodiscard]] int walk(int k, double x_m, double y_m) const noexcept;
   [[nodiscard]] int search(double x_m, double y_m) const noexcept;
   [[nodiscard]] CrgStation station(int k, double x_m, double y_m) const noexcept;
+  [[nodiscard]] bool beyond_the_ends(int k, const InSegment& s) const noexcept;
+  /// Whether the whole grid lies behind the first / last cross section (then no point beyond it
+  /// can be on the grid).
+  [[nodiscard]] bool grid_behind_end(bool first) const noexcept;
 
   double u_first_m_ = 0;
+  double v_first_m_ = 0;  ///< the grid's width (right and left edges)
+  double v_last_m_ = 0;
+  bool start_clear_ = true;  ///< grid_behind_end(true)
+  bool end_clear_ = true;
   double du_m_ = 1;
   std::vector<double> node_x_;
   std::vector<double> node_y_;

@@ -100,7 +100,7 @@ SurfaceHeight CrgSurface::height(double x_m, double y_m, SurfaceHint& hint) cons
   const double gx = h.dz_du * s.du_dx + h.dz_dv * s.dv_dx;
   const double gy = h.dz_du * s.du_dy + h.dz_dv * s.dv_dy;
   // the gradient back into the road frame: R(rotation) g
-  return {h.z_m + dz_m_, cos_ * gx - sin_ * gy, sin_ * gx + cos_ * gy};
+  return {h.absolute ? h.z_m : h.z_m + dz_m_, cos_ * gx - sin_ * gy, sin_ * gx + cos_ * gy};
 }
 
 void CrgSurface::world_point(double u_m, double v_m, double& x_m, double& y_m) const noexcept {
@@ -223,7 +223,7 @@ CrgSurface::UvHeight CrgSurface::at_uv(double u_m, double v_m, int& v_cell) cons
   if ((u.outside && options_.border_u == CrgBorderMode::kZero) ||
       (v.outside && options_.border_v == CrgBorderMode::kZero)) {
     h.z_m = offset_m;  // BORDER_MODE 1: the offset alone
-    smooth(u, h);
+    h.absolute = true;
     return h;
   }
   // bilinear in the cell (OpenCRG's crgEvaluv2z)

@@ -6,7 +6,8 @@
 /// with z_ref the integrated slope channel (z_ref,i = z_ref,i-1 + slope_i du, from
 /// REFERENCE_LINE_START_Z) and banking, both linear between cross sections, v clamped to the
 /// grid's width for the banking term. Off the grid the $ROAD_CRG_OPTS border modes apply
-/// (model/road/crg_data.h), then BORDER_SMOOTH_UBEG/UEND. NaN cells are filled once, at
+/// (model/road/crg_data.h; BORDER_MODE 1: z = the offsets, not moved by a placement), then
+/// BORDER_SMOOTH_UBEG/UEND. NaN cells are filled once, at
 /// construction, by GRID_NAN_MODE. The gradient is that of the evaluated (piecewise bilinear)
 /// surface, exact: dz/dx = dz/du du/dx + dz/dv dv/dx.
 ///
@@ -40,6 +41,9 @@ class CrgSurface final : public Surface {
     double z_m = 0;
     double dz_du = 0;
     double dz_dv = 0;
+    /// BORDER_MODE 1 gave the height: the offset itself, in the road frame too (a placed patch
+    /// surrounded by z = offset, as OpenCRG returns it).
+    bool absolute = false;
   };
   [[nodiscard]] UvHeight at_uv(double u_m, double v_m, int& v_cell) const noexcept;
 
