@@ -87,7 +87,7 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
   sequence_.add_stage(wheel_stage_);
 }
 
-void VehicleBlocks::update_contacts() noexcept {
+void VehicleBlocks::update_contacts(double lookahead_s) noexcept {
   const auto& y = state_.framework_y;
   const auto& z = state_.framework_z;
   kinematics_.update(state_, work_);  // eq. (29) at y_V(k), before any contact is evaluated
@@ -97,7 +97,7 @@ void VehicleBlocks::update_contacts() noexcept {
     WheelWork& w = work_.wheels[k];
     const tire::TmeasyParams& t = p_.axles[k / 2].tire.tmeasy;
     const bool plane = framework_.road().is_plane();
-    if (!plane) w.road = framework_.road_plane(rot, y, i, w.probe_hints);
+    if (!plane) w.road = framework_.road_plane(rot, y, z, i, lookahead_s, w.probe_hints);
     const WheelContact c = framework_.contact(rot, y, z, i);
     w.load_n = tire::vertical_tire_force(t.vertical_stiffness_npm, t.vertical_damping_nspm,
                                          c.penetration_m, c.penetration_rate_mps)

@@ -31,7 +31,7 @@ void VehicleModel::end_settle(const Pose& pose, double speed_mps) noexcept {
   hold_plane_motion(speed_mps);
   state_.acceleration_mps2.setZero();
   saved_ = state_;
-  blocks_->update_contacts();
+  blocks_->update_contacts(0.0);
   blocks_->update_outputs();
 }
 

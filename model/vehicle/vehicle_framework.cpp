@@ -128,10 +128,13 @@ WheelContact VehicleFramework::contact(const Mat3& rot, const Vector& y, const V
                        r0);
 }
 
-LocalRoadPlane VehicleFramework::road_plane(const Mat3& rot, const Vector& y, int i,
+LocalRoadPlane VehicleFramework::road_plane(const Mat3& rot, const Vector& y, const Vector& z,
+                                            int i, double lookahead_s,
                                             ProbeHints& hints) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  const Vec3 centre = y.head<3>() + rot * wheel_centre(i, y(6 + i));
+  const Vec3 r = wheel_centre(i, y(6 + i));
+  const Vec3 velocity = rot * (z.segment<3>(0) + z.segment<3>(3).cross(r));  // road frame
+  const Vec3 centre = y.head<3>() + rot * r + lookahead_s * velocity;
   const Vec3 spin = rot * work_.wheels[k].spin_axis;
   const Vec3 heading = spin.cross(Vec3::UnitZ()).normalized();
   const Vec3 down = spin.cross(heading);  // in the wheel plane, at right angles to the heading

@@ -44,12 +44,13 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   /// The same at the wheel's contact c (contact(rot, y, z, i)).
   [[nodiscard]] WheelForces wheel_forces(const WheelContact& c, const Vector& y, const Vector& z,
                                          int i) const noexcept;
-  /// The local road plane of wheel i at y (TMeasy's four probes, local_road_plane.h) around its
-  /// static contact point: the wheel's lowest point as on a level road, r_0 below the centre in
-  /// the wheel plane; fore and aft along the wheel's horizontal heading. Memoryless (a function
-  /// of y alone). Only for a road that is not the plane (road::Road::is_plane).
-  [[nodiscard]] LocalRoadPlane road_plane(const Mat3& rot, const Vector& y, int i,
-                                          ProbeHints& hints) const noexcept;
+  /// The local road plane of wheel i (TMeasy's four probes, local_road_plane.h) around its
+  /// static contact point `lookahead_s` on from (y, z): the wheel's lowest point as on a level
+  /// road, r_0 below the centre in the wheel plane, moved with the centre's velocity; fore and
+  /// aft along the wheel's horizontal heading. A function of (y, z) alone. Only for a road that
+  /// is not the plane (road::Road::is_plane).
+  [[nodiscard]] LocalRoadPlane road_plane(const Mat3& rot, const Vector& y, const Vector& z, int i,
+                                          double lookahead_s, ProbeHints& hints) const noexcept;
   /// Contact kinematics of wheel i at (y, z): on the plane road from the road, else on the
   /// wheel's local road plane of the step (work.wheels[i].road).
   [[nodiscard]] WheelContact contact(const Vector& y, const Vector& z, int i) const noexcept;
