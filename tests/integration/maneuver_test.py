@@ -27,8 +27,8 @@ from rig_checks import fail  # noqa: E402
 import rig_checks  # noqa: E402
 
 RIG, LOG2CSV, SRC, NAME = sys.argv[1:5]
-COLUMNS = ("sim_time_s", "unit0_", "unit1_", "wheel0_", "wheel1_", "steering_", "gear", "num_",
-           "joint0_", "rack_", "torsion_bar_", "tie_rod_")
+COLUMNS = ("sim_time_s", "unit0_", "unit1_", "wheel0_", "wheel1_", "wheel2_", "wheel3_", "wheel4_",
+           "wheel5_", "steering_", "gear", "num_", "joint0_", "rack_", "torsion_bar_", "tie_rod_")
 TMP = tempfile.mkdtemp(prefix=f"rig_maneuver_{NAME}_")
 # Configurations that run until stopped get a duration here.
 DURATION_S = {"bench": "5"}
@@ -140,12 +140,22 @@ def creep_mm(rows, t0, t1):
 
 
 def case_rig(s, rows):
-    # DLC at 60 km/h up the 10 % grade, then brakes at 10.5 s, stand-still, hold to 20 s.
+    # DLC at 60 km/h on the flat, onto the 10 % hill (config/roads/demo-hill.xodr), brakes at
+    # 12 s, stand-still on the hill, held to 20 s.
+    flat = [r for r in rows if r["sim_time_s"] < 10.0]
+    check(all(r[f"wheel{i}_road_z_m"] == 0.0 and r[f"wheel{i}_road_normal_z"] == 1.0
+              for r in flat for i in (0, 1)), "the lane change (t < 10 s) is driven on the flat")
     check_dlc([r for r in rows if r["sim_time_s"] < 10.5], 40.0, 16.67)
-    stop = next(r["sim_time_s"] for r in rows if r["sim_time_s"] > 10.5 and speed(r) < 0.01)
-    check(stop < 15.0, f"stand-still at t = {stop:.2f} s (< 15 s)")
-    creep = creep_mm(rows, 15.0, 20.0)
-    check(creep < 1.0, f"creep on the 10 % grade over 15-20 s: {creep:.3f} mm (< 1 mm)")
+    stop = next(r["sim_time_s"] for r in rows if r["sim_time_s"] > 12.0 and speed(r) < 0.01)
+    check(stop < 15.5, f"stand-still at t = {stop:.2f} s (< 15.5 s)")
+    end = rows[-1]
+    grade = -end["wheel0_road_normal_x"] / end["wheel0_road_normal_z"]
+    check(abs(grade - 0.10) < 1e-6 and end["unit0_x_m"] > 200.0,
+          f"parked on the 10 % hill: x = {end['unit0_x_m']:.1f} m, grade under the wheels {grade:.4f}")
+    check(abs(end["unit0_pitch_rad"] + math.atan(0.10)) < 0.02,
+          f"pitched up the hill: {end['unit0_pitch_rad']:.4f} rad (atan 0.1 = 0.0997)")
+    creep = creep_mm(rows, 16.0, 20.0)
+    check(creep < 1.0, f"creep on the 10 % grade over 16-20 s: {creep:.3f} mm (< 1 mm)")
     check(all(r["wheel0_brake_torque_nm"] != 0 for r in rows if r["sim_time_s"] > 15),
           "brakes hold the car")
 
