@@ -34,7 +34,7 @@ struct WheelReport {
   double tire_load_n = 0;       ///< F_z of the step's start, where the characteristic was taken
   // the road under the wheel: its local plane of the step (road frame; the plane road: z = 0,
   // e_z, whose grade and bank tilt gravity instead)
-  double road_z_m = 0;       ///< the road's height at the contact point
+  double road_z_m = 0;       ///< the road's height under the wheel: the plane at the probes' centre
   double road_normal_x = 0;  ///< upward unit normal of the road there, road frame
   double road_normal_y = 0;
   double road_normal_z = 1;

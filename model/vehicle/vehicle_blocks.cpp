@@ -124,15 +124,10 @@ void VehicleBlocks::update_outputs() noexcept {
     WheelWork& w = work_.wheels[static_cast<std::size_t>(i)];
     const WheelContact c = framework_.contact(rot, y, z, i);
     w.out = framework_.wheel_forces(c, y, z, i);
-    // the plane road is z = 0 of the road frame; else the local plane's height at the contact
-    // point (from the plane's own point: exactly its height where the plane is level)
-    if (plane) {
-      w.road_z_m = 0.0;
-    } else {
-      const Vec3 d = y.head<3>() + rot * c.lever_m - w.road.point_m;
-      const Vec3& n = w.road.normal;
-      w.road_z_m = w.road.point_m.z() - (n.x() * d.x() + n.y() * d.y()) / n.z();
-    }
+    // the plane road is z = 0 of the road frame; else the local plane's height under the
+    // wheel: at its static contact point, the probes' centre (on a 20 mm cleat at most 10 mm,
+    // where the contact point on the tilted plane may lie higher than the cleat)
+    w.road_z_m = plane ? 0.0 : w.road.point_m.z();
   }
   work_.torsion_bar_torque_nm =
       steering_system_->torsion_bar_torque_nm(state_.steering_y, state_.steering_z);

@@ -44,7 +44,7 @@ struct WheelWork {
   /// it). On the plane road (road::Road::is_plane) it stays z = 0, e_z: the road is asked directly.
   LocalRoadPlane road{};
   ProbeHints probe_hints{};  ///< the four probes' last cells (speed only, not results)
-  double road_z_m = 0;       ///< the road's height at the contact point (update_outputs)
+  double road_z_m = 0;       ///< the road's height under the wheel (update_outputs)
   // ---- the tire at the start of the step (VehicleModel's contacts) ----
   double load_n = 0;         ///< F_z at y_V(k), z_V(k)
   double road_friction = 1;  ///< mu of the road under the wheel (the bore torque's limit)

@@ -212,15 +212,21 @@ TEST(RoadContact, SedanOnATiltedSurfaceStandsAsOnTheTiltedGravityPlane) {
     EXPECT_NEAR(w.road_normal_z, 1 / norm, 1e-12);
     EXPECT_EQ(w.road_mu, 1.0);
   }
-  // the wheel's road height: the surface's height at its contact point (the foot of the centre
-  // on the local plane, which on a plane surface lies on the surface)
+  // the wheel's road height: the surface's under the wheel (at the probes' centre, the static
+  // contact point, r0 below the centre in the wheel plane); the contact point, the centre's foot
+  // on the local plane, lies on the surface too
   const auto& y = b.state().framework_y;
   const Mat3 rot = body_to_road(y(3), y(4), y(5));
   for (int i = 0; i < 4; ++i) {
+    const Vec3 under = b.workspace().wheels[static_cast<std::size_t>(i)].road.point_m;
+    const Vec3 centre = y.head<3>() + rot * b.framework().wheel_centre(i, y(6 + i));
+    const WheelReport& w = r.units[0].wheels[static_cast<std::size_t>(i)];
+    EXPECT_NEAR(w.road_z_m, grade * under.x() + bank * under.y() + 1.5, 1e-12);
+    // r0 below the centre in the wheel plane: off the vertical by the roll (and camber) only
+    EXPECT_LT(std::hypot(under.x() - centre.x(), under.y() - centre.y()),
+              0.316 * (std::abs(std::sin(y(5))) + 0.02));
     const WheelContact c = b.framework().contact(y, b.state().framework_z, i);
     const Vec3 contact = y.head<3>() + rot * c.lever_m;
-    const WheelReport& w = r.units[0].wheels[static_cast<std::size_t>(i)];
-    EXPECT_NEAR(w.road_z_m, contact.z(), 1e-12);
     EXPECT_NEAR(contact.z(), grade * contact.x() + bank * contact.y() + 1.5, 1e-12);
   }
 }
