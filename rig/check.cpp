@@ -12,6 +12,7 @@
 #include "io/config/config_error.h"
 #include "io/config/crg_file.h"
 #include "io/config/input_file.h"
+#include "io/config/opendrive_file.h"
 #include "io/config/strict_table.h"
 #include "io/config/vehicle_file.h"
 #include "io/lcm/lcm_settings.h"
@@ -158,6 +159,20 @@ void check_crg(const FileContent& c, std::ostream& notes) {
         << data.u_last_m() << " m, v " << data.v_m.front() << " .. " << data.v_m.back() << " m\n";
 }
 
+// ---- OpenDRIVE roads (config/roads/*.xodr): XML whose root element is <OpenDRIVE>
+
+bool is_opendrive(const FileContent& c) {
+  return !c.toml && c.head.find("<OpenDRIVE") != std::string::npos;
+}
+
+void check_opendrive(const FileContent& c, std::ostream& /*notes*/) {
+  const auto file = io::config::load_opendrive_file(c.path);
+  for (const auto& road : file.roads)  // every road, as the model would build its surface
+    (void)io::config::make_opendrive_surface(file, road.id, {});
+  // as `rig run` shows them: gaps between geometries, ignored profiles
+  for (const auto& warning : file.warnings) std::cerr << "rig: warning: " << warning << "\n";
+}
+
 /// The registry. A new kind of file: one entry (and its recognizer and checker above).
 constexpr std::array kFileKinds{
     FileKind{"run-config",
@@ -176,6 +191,8 @@ constexpr std::array kFileKinds{
              check_dbc},
     FileKind{"crg", "an OpenCRG road surface starting with $CT or another OpenCRG section (*.crg)",
              is_crg, check_crg},
+    FileKind{"opendrive", "XML with the root element <OpenDRIVE> (an ASAM OpenDRIVE road, .xodr)",
+             is_opendrive, check_opendrive},
 };
 
 void print_expected(std::ostream& err) {

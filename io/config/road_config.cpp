@@ -5,8 +5,12 @@
 #include <string>
 
 #include "io/config/crg_file.h"
+#include "io/config/opendrive_file.h"
+#include "io/config/road_friction_zones.h"
+#include "io/config/road_obstacles.h"
 #include "model/road/crg_surface.h"
 #include "model/road/iso8608.h"
+#include "model/road/layered_surface.h"
 #include "model/road/plane_surface.h"
 
 namespace rig::io::config {
@@ -20,30 +24,21 @@ using model::road::Surface;
 constexpr int kMaxIsoLongSections = 201;
 constexpr double kMaxIsoCells = 2e7;
 
-// ---- hooks for the parts of issue 16 built on branch road-xodr (OpenDRIVE, obstacles,
-// friction zones): each reads its keys from [road] and returns its piece of the road.
+// ---- OpenDRIVE, obstacles, friction zones (io/config/opendrive_file.h, road_obstacles.h,
+// road_friction_zones.h)
 
 std::shared_ptr<const Surface> opendrive_surface(StrictTable& road) {
-  throw road.error("kind",
-                   "\"opendrive\" is not available yet (issue 16: the OpenDRIVE loader of branch "
-                   "road-xodr is not merged)");
-}
-
-std::shared_ptr<const Surface> with_obstacles(StrictTable& road,
-                                              std::shared_ptr<const Surface> base) {
-  if (road.has("obstacle"))
-    throw road.error("obstacle",
-                     "[[road.obstacle]] is not available yet (issue 16: branch road-xodr is not "
-                     "merged)");
-  return base;
-}
-
-std::shared_ptr<const FrictionField> friction_zones(StrictTable& road) {
-  if (road.has("friction_zone"))
-    throw road.error("friction_zone",
-                     "[[road.friction_zone]] is not available yet (issue 16: branch road-xodr is "
-                     "not merged)");
-  return nullptr;
+  const OpenDriveFile file = load_opendrive_file(road.existing_path("file"));
+  const std::string road_id = road.string("road_id", "");
+  const model::road::Placement placement = read_placement(road);
+  if (!road_id.empty()) {
+    try {
+      (void)select_road(file, road_id);
+    } catch (const ConfigError& e) {
+      throw road.error("road_id", e.what());  // where it was asked for, and the file's roads
+    }
+  }
+  return make_opendrive_surface(file, road_id, placement);
 }
 
 // ---- the surfaces of this branch
@@ -116,8 +111,8 @@ model::road::RoadParams read_road_section(StrictTable road) {
   if (kind == "crg") surface = crg_surface(road);
   if (kind == "iso8608") surface = iso8608_surface(road);
   if (kind == "opendrive") surface = opendrive_surface(road);
-  r.surface = with_obstacles(road, surface);
-  r.friction_field = friction_zones(road);
+  r.surface = model::road::with_overlay(surface, load_obstacles(road));
+  r.friction_field = load_friction_zones(road);
   road.finish();
   return r;
 }

@@ -9,13 +9,15 @@
 ///   # plane:   grade = 0.0, bank = 0.0   (tan of a real, tilted plane's slopes; gravity stays
 ///   #          straight down)
 ///   # crg:     file = "roads/x.crg"      (relative to this file)
+///   # opendrive: file = "roads/x.xodr", road_id = "1" (default: the file's first road)
 ///   # iso8608: class = "A".."E", seed = 1, length_m = 1000, width_m = 4, spacing_m = 0.05,
 ///   #          fade_m = 5                (model/road/iso8608.h)
-///   [road.placement]          # crg, iso8608: model/road/placement.h (absent: where the file
-///   u_m, v_m, x_m, y_m, z_m, heading_rad    # or the generator puts it)
+///   [road.placement]          # crg, iso8608, opendrive: model/road/placement.h (absent: where
+///   u_m, v_m, x_m, y_m, z_m, heading_rad    # the file or the generator puts it; opendrive:
+///                                           # u_m, v_m are s, t of the road)
+///   [[road.obstacle]]         # on any kind: io/config/road_obstacles.h
+///   [[road.friction_zone]]    # on any kind: io/config/road_friction_zones.h
 ///
-/// `kind = "opendrive"`, `[[road.obstacle]]` and `[[road.friction_zone]]` are read by the loaders
-/// of branch road-xodr (hooks in road_config.cpp; until merged: a clear "not available yet").
 /// A `[road]` section and any `[model] road_*` key together is an error.
 
 #include <toml++/toml.h>
