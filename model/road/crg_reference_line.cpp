@@ -76,8 +76,6 @@ bool CrgReferenceLine::beyond_the_ends(int k, const InSegment& s) const noexcept
   return (k == 0 && s.before()) || (k == last_ && s.after());
 }
 
-
-
 void CrgReferenceLine::build_segments() {
   const std::size_t n = node_x_.size();
   segments_.resize(n - 1);

@@ -52,8 +52,12 @@ class CrgReferenceLine {
   [[nodiscard]] double heading_rad(double u_m) const noexcept;
 
   [[nodiscard]] int segment_count() const noexcept { return last_ + 1; }
-  [[nodiscard]] double node_x_m(int i) const noexcept { return node_x_[static_cast<std::size_t>(i)]; }
-  [[nodiscard]] double node_y_m(int i) const noexcept { return node_y_[static_cast<std::size_t>(i)]; }
+  [[nodiscard]] double node_x_m(int i) const noexcept {
+    return node_x_[static_cast<std::size_t>(i)];
+  }
+  [[nodiscard]] double node_y_m(int i) const noexcept {
+    return node_y_[static_cast<std::size_t>(i)];
+  }
 
  private:
   /// A segment P_k -> P_k+1: its start, unit tangent t, length, and the tangential parts a1, a2

@@ -85,15 +85,15 @@ class CrgSurface final : public Surface {
   double inv_du_ = 1;
   std::vector<double> v_;
   std::vector<double> inv_dv_cell_;  ///< 1 / the width of each long-section cell
-  bool v_equal_ = true;  ///< equally spaced long sections: cell by multiplication
+  bool v_equal_ = true;              ///< equally spaced long sections: cell by multiplication
   double dv_m_ = 1;
   double inv_dv_ = 1;
   int nv_ = 0;
   int nu_ = 0;
-  std::vector<float> z_;        ///< the grid, NaN cells filled, SCALE_Z_GRID applied
-  std::vector<double> z_ref_;   ///< reference line height per cross section
-  std::vector<double> bank_;    ///< banking per cross section
-  bool smoothing_ = false;      ///< BORDER_SMOOTH_UBEG or _UEND given
+  std::vector<float> z_;       ///< the grid, NaN cells filled, SCALE_Z_GRID applied
+  std::vector<double> z_ref_;  ///< reference line height per cross section
+  std::vector<double> bank_;   ///< banking per cross section
+  bool smoothing_ = false;     ///< BORDER_SMOOTH_UBEG or _UEND given
   // placement: p_file = R(-rot) (p_world - t) + p_ref, z_world = z_file + dz
   double cos_ = 1;
   double sin_ = 0;
