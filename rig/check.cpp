@@ -144,7 +144,10 @@ bool is_crg(const FileContent& c) {
         line.starts_with('%'))
       continue;
     std::string word;
-    for (std::size_t i = 1; i < line.size() && (std::isalnum(static_cast<unsigned char>(line[i])) != 0 || line[i] == '_'); ++i)
+    for (std::size_t i = 1;
+         i < line.size() &&
+         (std::isalnum(static_cast<unsigned char>(line[i])) != 0 || line[i] == '_');
+         ++i)
       word += static_cast<char>(std::toupper(static_cast<unsigned char>(line[i])));
     return line.starts_with('$') &&
            (word == "CT" || word == "KD_DEFINITION" || word.starts_with("ROAD_CRG"));

@@ -111,8 +111,9 @@ void read_road(io::config::StrictTable& top, RigConfig& c) {
   if (!road) return;
   if (auto m = top.optional_table("model")) io::config::check_no_model_road_keys(*m);
   if (!c.model.vehicle && !c.model.combination)
-    throw road->error("needs [model] kind = \"vehicle\" or \"combination\" (the quarter car has "
-                      "its own grade)");
+    throw road->error(
+        "needs [model] kind = \"vehicle\" or \"combination\" (the quarter car has "
+        "its own grade)");
   const model::road::RoadParams params = io::config::read_road_section(*road);
   if (c.model.vehicle) c.model.vehicle->params.road = params;
   if (c.model.combination) {

@@ -17,7 +17,8 @@ using io::config::ConfigError;
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+    s.remove_suffix(1);
   return s;
 }
 
@@ -67,8 +68,8 @@ std::vector<RoadPoint> parse_road_points(const std::string& text, const std::str
     const auto comma = raw.find(',');
     if (comma == std::string_view::npos || raw.find(',', comma + 1) != std::string_view::npos)
       throw ConfigError(where + ": expected x,y (two numbers), not '" + std::string(raw) + "'");
-    points.push_back({coordinate(raw.substr(0, comma), where),
-                      coordinate(raw.substr(comma + 1), where)});
+    points.push_back(
+        {coordinate(raw.substr(0, comma), where), coordinate(raw.substr(comma + 1), where)});
   }
   return points;
 }

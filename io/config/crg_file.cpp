@@ -87,9 +87,9 @@ std::vector<double> long_section_v(const crg::Definition& def, const Layout& l,
       throw crg::error_at(file, ch.line,
                           "mixes 'long section N' and 'long section at v = X' channels");
     if (!ch.v_m && ch.number != static_cast<int>(j) + 1)
-      throw crg::error_at(file, ch.line, "long section " + std::to_string(ch.number) +
-                                             " where long section " + std::to_string(j + 1) +
-                                             " is due");
+      throw crg::error_at(file, ch.line,
+                          "long section " + std::to_string(ch.number) + " where long section " +
+                              std::to_string(j + 1) + " is due");
     if (ch.v_m && j > 0 && !(*ch.v_m > v.back()))
       throw crg::error_at(file, ch.line, "long sections must go from right to left (v rising)");
     if (ch.v_m) v.push_back(*ch.v_m);

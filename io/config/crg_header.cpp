@@ -12,7 +12,7 @@ namespace {
 
 constexpr std::size_t kRecordBytes = 72;  // significant bytes of a header record
 constexpr std::array<std::string_view, 7> kSections{
-    "CT", "ROAD_CRG", "ROAD_CRG_MPRO", "KD_DEFINITION", "ROAD_CRG_OPTS", "ROAD_CRG_MODS",
+    "CT",           "ROAD_CRG", "ROAD_CRG_MPRO", "KD_DEFINITION", "ROAD_CRG_OPTS", "ROAD_CRG_MODS",
     "ROAD_CRG_FILE"};
 
 std::string_view trim(std::string_view s) {
@@ -58,16 +58,15 @@ void open_section(std::string_view raw, int line, const std::string& file, Heade
                        " (OpenCRG has $CT, $ROAD_CRG, $ROAD_CRG_MPRO, $KD_Definition, "
                        "$ROAD_CRG_OPTS, $ROAD_CRG_MODS, $ROAD_CRG_FILE)");
   if (const Section* s = h.find(name))
-    throw error_at(file, line,
-                   "a second $" + name + " section (the first is at line " +
-                       std::to_string(s->line) + ")");
+    throw error_at(
+        file, line,
+        "a second $" + name + " section (the first is at line " + std::to_string(s->line) + ")");
   h.sections.push_back({name, line, {}});
   current = static_cast<int>(h.sections.size()) - 1;
 }
 
 /// A record inside a section or outside every section.
-void add_record(std::string_view raw, int line, const std::string& file, Header& h,
-                int current) {
+void add_record(std::string_view raw, int line, const std::string& file, Header& h, int current) {
   if (current < 0) {  // outside a section: only comments and blank lines
     if (trim(raw).empty() || raw[0] == '*' || raw[0] == '%') return;
     throw error_at(file, line,
@@ -118,8 +117,9 @@ class KeyValues {
   void finish(std::string_view what) const {
     for (const auto& [key, a] : values_) {
       if (std::find(read_.begin(), read_.end(), key) == read_.end())
-        throw error_at(file_, a.line, "$" + section_.name + ": unknown key " + key + " (" +
-                                          std::string(what) + ")");
+        throw error_at(
+            file_, a.line,
+            "$" + section_.name + ": unknown key " + key + " (" + std::string(what) + ")");
     }
   }
 
@@ -238,11 +238,12 @@ RoadCrgKeys read_road_crg(const Section* section, const std::string& file) {
   k.v_line = kv.line_of(k.v_increment ? "LONG_SECTION_V_INCREMENT" : "LONG_SECTION_V_RIGHT");
   k.end_xy_line = kv.line_of(p + "END_X");
   // the end heading (a check value) and the geographic position: read, not needed
-  for (const char* key : {"END_PHI", "START_LON", "START_LAT", "START_ALT", "END_LON", "END_LAT",
-                          "END_ALT"})
+  for (const char* key :
+       {"END_PHI", "START_LON", "START_LAT", "START_ALT", "END_LON", "END_LAT", "END_ALT"})
     (void)kv.take(p + key);
-  kv.finish("OpenCRG's REFERENCE_LINE_START/END_U/X/Y/Z/PHI/S/B/LON/LAT/ALT, "
-            "REFERENCE_LINE_INCREMENT, LONG_SECTION_V_RIGHT/LEFT/INCREMENT");
+  kv.finish(
+      "OpenCRG's REFERENCE_LINE_START/END_U/X/Y/Z/PHI/S/B/LON/LAT/ALT, "
+      "REFERENCE_LINE_INCREMENT, LONG_SECTION_V_RIGHT/LEFT/INCREMENT");
   return k;
 }
 
@@ -289,8 +290,8 @@ Channel channel_of(std::string_view spec, int line, const std::string& file) {
                        "section N; long section at v = X)");
   }
   if (unit != want)
-    throw error_at(file, line, "channel '" + name + "' has unit '" + unit + "', expected '" +
-                                   want + "'");
+    throw error_at(file, line,
+                   "channel '" + name + "' has unit '" + unit + "', expected '" + want + "'");
   return ch;
 }
 
@@ -299,8 +300,9 @@ model::road::CrgBorderMode border_mode(KeyValues& kv, const std::string& key,
   const int mode = kv.integer(key, 2, 0, 4);
   if (mode == 0)
     throw error_at(file, kv.line_of(key),
-                   key + " = 0 gives NaN beyond the grid, which no tire can stand on; use 1 "
-                         "(zero), 2 (keep last), 3 (repeat) or 4 (reflect)");
+                   key +
+                       " = 0 gives NaN beyond the grid, which no tire can stand on; use 1 "
+                       "(zero), 2 (keep last), 3 (repeat) or 4 (reflect)");
   return static_cast<model::road::CrgBorderMode>(mode);
 }
 
@@ -352,19 +354,24 @@ Definition read_definition(const Section& section, const std::string& file) {
       const std::string f = upper(trim(text.substr(2)));
       if (have_format) throw error_at(file, r.line, "a second data format (#:) record");
       have_format = true;
-      if (f == "LRFI") d.format = Format::kLrfi;
-      else if (f == "LDFI") d.format = Format::kLdfi;
-      else if (f == "KRBI") d.format = Format::kKrbi;
-      else if (f == "KDBI") d.format = Format::kKdbi;
-      else throw error_at(file, r.line, "unknown data format '" + f + "' (LRFI, LDFI, KRBI, KDBI)");
+      if (f == "LRFI")
+        d.format = Format::kLrfi;
+      else if (f == "LDFI")
+        d.format = Format::kLdfi;
+      else if (f == "KRBI")
+        d.format = Format::kKrbi;
+      else if (f == "KDBI")
+        d.format = Format::kKdbi;
+      else
+        throw error_at(file, r.line, "unknown data format '" + f + "' (LRFI, LDFI, KRBI, KDBI)");
     } else if (text.starts_with("U:") || text.starts_with("u:")) {
       continue;  // a virtual channel (for viewers); $ROAD_CRG defines u
     } else if (text.starts_with("D:") || text.starts_with("d:")) {
       d.channels.push_back(channel_of(text.substr(2), r.line, file));
     } else {
-      throw error_at(file, r.line,
-                     "$KD_Definition: expected #:FORMAT, U:... or D:name,unit, not '" + r.text +
-                         "'");
+      throw error_at(
+          file, r.line,
+          "$KD_Definition: expected #:FORMAT, U:... or D:name,unit, not '" + r.text + "'");
     }
   }
   return d;
@@ -387,11 +394,10 @@ model::road::CrgOptions read_options(const Section& section, const std::string& 
                    "REFLINE_CONTINUATION = 1 (a closed track) is not supported; 0 extends the "
                    "reference line straight");
   // the OpenCRG tools' own messages, logs, searches and consistency checks: read, not needed
-  for (const char* key :
-       {"REFLINE_SEARCH_FAR", "REFLINE_SEARCH_CLOSE", "WARN_MSGS", "WARN_CURV_LOCAL",
-        "WARN_CURV_GLOBAL", "LOG_MSGS", "LOG_EVAL", "LOG_EVAL_FREQ", "LOG_HIST", "LOG_HIST_FREQ",
-        "LOG_STAT", "LOG_STAT_FREQ", "CHECK_EPS", "CHECK_INC", "CHECK_TOL", "CHECK_PRO",
-        "CHECK_WGS"})
+  for (const char* key : {"REFLINE_SEARCH_FAR", "REFLINE_SEARCH_CLOSE", "WARN_MSGS",
+                          "WARN_CURV_LOCAL", "WARN_CURV_GLOBAL", "LOG_MSGS", "LOG_EVAL",
+                          "LOG_EVAL_FREQ", "LOG_HIST", "LOG_HIST_FREQ", "LOG_STAT", "LOG_STAT_FREQ",
+                          "CHECK_EPS", "CHECK_INC", "CHECK_TOL", "CHECK_PRO", "CHECK_WGS"})
     (void)kv.take(key);
   kv.finish("OpenCRG's BORDER_*, REFLINE_*, WARN_*, LOG_*, CHECK_* options");
   return o;

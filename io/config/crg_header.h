@@ -30,9 +30,9 @@ struct Section {
 
 struct Header {
   std::vector<Section> sections;
-  bool has_payload = false;         ///< a `$$` separator record was found
-  std::size_t payload_offset = 0;   ///< first byte after the separator record
-  int payload_line = 0;             ///< line number of the first payload record
+  bool has_payload = false;        ///< a `$$` separator record was found
+  std::size_t payload_offset = 0;  ///< first byte after the separator record
+  int payload_line = 0;            ///< line number of the first payload record
   [[nodiscard]] const Section* find(std::string_view name) const;
 };
 

@@ -91,7 +91,8 @@ Payload text_payload(std::string_view content, const Header& h, std::size_t widt
 double big_endian(const unsigned char* b, std::size_t width) {
   std::uint64_t bits = 0;
   for (std::size_t i = 0; i < width; ++i) bits = (bits << 8) | b[i];
-  if (width == 4) return static_cast<double>(std::bit_cast<float>(static_cast<std::uint32_t>(bits)));
+  if (width == 4)
+    return static_cast<double>(std::bit_cast<float>(static_cast<std::uint32_t>(bits)));
   return std::bit_cast<double>(bits);
 }
 

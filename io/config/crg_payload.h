@@ -19,8 +19,8 @@ namespace rig::io::config::crg {
 struct Payload {
   std::vector<double> values;  ///< rows * channels, row by row; NaN where the file has NaN
   std::size_t rows = 0;
-  std::vector<int> row_line;   ///< text: the line of each row's first record; binary: empty
-  int first_line = 0;          ///< the payload's first line (binary data: where errors point)
+  std::vector<int> row_line;  ///< text: the line of each row's first record; binary: empty
+  int first_line = 0;         ///< the payload's first line (binary data: where errors point)
   /// `file:line` naming a row, for errors about its values.
   [[nodiscard]] std::string where(const std::string& file, std::size_t row) const;
 };

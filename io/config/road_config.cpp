@@ -16,7 +16,6 @@
 namespace rig::io::config {
 namespace {
 
-using model::road::FrictionField;
 using model::road::Surface;
 
 /// The ISO 8608 grid's bounds: its generation factors a coherence matrix of every long section
@@ -103,8 +102,7 @@ model::road::Placement read_placement(StrictTable& road) {
 
 model::road::RoadParams read_road_section(StrictTable road) {
   model::road::RoadParams r;
-  const std::string kind =
-      road.choice("kind", "plane", {"plane", "crg", "opendrive", "iso8608"});
+  const std::string kind = road.choice("kind", "plane", {"plane", "crg", "opendrive", "iso8608"});
   r.friction = road.number_in("friction", 1.0, 0.05, 2);
   std::shared_ptr<const Surface> surface;
   if (kind == "plane") surface = plane_surface(road);

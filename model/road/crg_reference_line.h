@@ -32,6 +32,10 @@ struct CrgStation {
   double du_dy = 0;
   double dv_dx = 0;
   double dv_dy = 1;
+  /// Between the cross sections `segment` and `segment` + 1, at `fraction` (0..1) of the way;
+  /// -1 on a straight continuation beyond an end.
+  int segment = -1;
+  double fraction = 0;
 };
 
 class CrgReferenceLine {
@@ -47,7 +51,7 @@ class CrgReferenceLine {
   /// last).
   [[nodiscard]] double heading_rad(double u_m) const noexcept;
 
-  [[nodiscard]] int segment_count() const noexcept { return static_cast<int>(segments_.size()); }
+  [[nodiscard]] int segment_count() const noexcept { return last_ + 1; }
   [[nodiscard]] double node_x_m(int i) const noexcept {
     return node_x_[static_cast<std::size_t>(i)];
   }
@@ -66,26 +70,32 @@ class CrgReferenceLine {
     double length = 1;
     double a1 = 0;
     double a2 = 0;
+    double da = 0;  ///< a2 - a1
   };
   /// A point in segment k: fraction f along it (0..1 inside), distance v, and the denominator
   /// L + v (a2 - a1) (<= 0: beyond where neighbouring cross sections cross).
   struct InSegment {
-    double f = 0;
     double v = 0;
-    double w = 0;  ///< distance along the tangent from the segment's start
+    double w = 0;    ///< distance along the tangent from the segment's start
+    double num = 0;  ///< w - v a1: f = num / den, so that the walk needs no division
     double den = 1;
+    [[nodiscard]] bool before() const noexcept { return num < 0; }
+    [[nodiscard]] bool after() const noexcept { return num > den; }
   };
 
   void build_segments();
   [[nodiscard]] InSegment in_segment(int k, double x_m, double y_m) const noexcept;
-  [[nodiscard]] int walk(int k, double x_m, double y_m) const noexcept;
+  /// The segment the walk from k ends in, and the point in it (`s`): at once where the probe is
+  /// still in segment k or has moved into a neighbour (a rolling wheel), else step by step.
+  [[nodiscard]] int walk(int k, double x_m, double y_m, InSegment& s) const noexcept;
   [[nodiscard]] int search(double x_m, double y_m) const noexcept;
-  [[nodiscard]] CrgStation station(int k, double x_m, double y_m) const noexcept;
+  [[nodiscard]] CrgStation station(int k, const InSegment& s, bool beyond) const noexcept;
   [[nodiscard]] bool beyond_the_ends(int k, const InSegment& s) const noexcept;
   /// Whether the whole grid lies behind the first / last cross section (then no point beyond it
   /// can be on the grid).
   [[nodiscard]] bool grid_behind_end(bool first) const noexcept;
 
+  int last_ = 0;  ///< the last segment
   double u_first_m_ = 0;
   double v_first_m_ = 0;  ///< the grid's width (right and left edges)
   double v_last_m_ = 0;

@@ -70,8 +70,8 @@ Eigen::MatrixXd coherence_factor(double n_cpm, double spacing_m, int nv) {
 /// kept in single precision (the heights are float32; half the memory of a long road).
 std::vector<std::vector<std::complex<float>>> spectra(const Iso8608Params& p, std::size_t n_fft,
                                                       int nv) {
-  std::vector<std::vector<std::complex<float>>> s(
-      static_cast<std::size_t>(nv), std::vector<std::complex<float>>(n_fft));
+  std::vector<std::vector<std::complex<float>>> s(static_cast<std::size_t>(nv),
+                                                  std::vector<std::complex<float>>(n_fft));
   Normal normal(p.seed);
   const double dn = 1.0 / (static_cast<double>(n_fft) * p.spacing_m);
   const double gd0 = iso8608_class_gd(p.road_class);
@@ -94,8 +94,8 @@ std::vector<std::vector<std::complex<float>>> spectra(const Iso8608Params& p, st
     const Eigen::VectorXd re = l * xi;
     const Eigen::VectorXd im = l * eta;
     for (int j = 0; j < nv; ++j) {
-      s[static_cast<std::size_t>(j)][k] = std::complex<float>(static_cast<float>(amplitude * re(j)),
-                                                              static_cast<float>(amplitude * im(j)));
+      s[static_cast<std::size_t>(j)][k] = std::complex<float>(
+          static_cast<float>(amplitude * re(j)), static_cast<float>(amplitude * im(j)));
     }
   }
   return s;

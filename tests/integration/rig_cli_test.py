@@ -201,7 +201,7 @@ def case_usage():
 # folder fails here until its kind is registered in rig/check.cpp and named here.
 KIND_OF_FOLDER = {"": "run-config", "maneuvers": "run-config", "combinations": "combination",
                   "vehicles": "vehicle", "can/.toml": "can-mapping", "can/.dbc": "dbc"}
-KINDS = ["run-config", "combination", "vehicle", "can-mapping", "dbc"]
+KINDS = ["run-config", "combination", "vehicle", "can-mapping", "dbc", "crg", "opendrive"]
 
 
 def config_files():

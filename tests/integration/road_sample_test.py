@@ -361,9 +361,9 @@ def case_bad_input():
     expect_error(config('[road]\nkind = "plane"\n', "road_grade = 0.1"), pts,
                  "CONFIG:4: [model] road_grade: the road is given by the [road] section")
     expect_error(config('[road]\nkind = "opendrive"\nfile = "x.xodr"\n'), pts,
-                 "[road] kind: \"opendrive\" is not available yet")
+                 "CONFIG:7: [road] file: file not found")
     expect_error(config('[road]\nkind = "plane"\n[[road.obstacle]]\nkind = "cleat"\n'), pts,
-                 "[road] obstacle: [[road.obstacle]] is not available yet")
+                 "CONFIG:7: [road].obstacle[0] length_m: missing required key")
     expect_error(config('[road]\nkind = "iso8608"\nclass = "F"\n'), pts,
                  "[road] class: \"F\": ISO 8608 classes are \"A\" to \"E\"")
     expect_error(config('[road]\nkind = "crg"\nfile = "nowhere.crg"\n'), pts, "CONFIG:7: [road] file")

@@ -171,10 +171,9 @@ TEST(CrgFile, BetweenNodesTheBilinearValue) {
     for (std::size_t j = 0; j + 1 < d.nv(); ++j) {
       const double a = 0.37;
       const double b = 0.81;
-      const double want = (1 - a) * (1 - b) * node_height(t, d, i, j) +
-                          a * (1 - b) * node_height(t, d, i + 1, j) +
-                          (1 - a) * b * node_height(t, d, i, j + 1) +
-                          a * b * node_height(t, d, i + 1, j + 1);
+      const double want =
+          (1 - a) * (1 - b) * node_height(t, d, i, j) + a * (1 - b) * node_height(t, d, i + 1, j) +
+          (1 - a) * b * node_height(t, d, i, j + 1) + a * b * node_height(t, d, i + 1, j + 1);
       double x = 0;
       double y = 0;
       s.world_point(static_cast<double>(i) + a, d.v_m[j] + b * (d.v_m[j + 1] - d.v_m[j]), x, y);
@@ -332,13 +331,14 @@ std::string lrfi(const std::string& road, const std::string& channels, const std
 const std::string kChannels =
     "D:reference line slope,m/m\nD:long section 1,m\nD:long section 2,m\nD:long section 3,m\n";
 const std::string kRoad = "REFERENCE_LINE_INCREMENT = 1.0\nLONG_SECTION_V_INCREMENT = 0.5\n";
-const std::string kRows = " 0.0000000 0.0000000 0.0000000 0.0000000\n"
-                          " 0.0100000 0.0100000 0.0200000 0.0300000\n";
+const std::string kRows =
+    " 0.0000000 0.0000000 0.0000000 0.0000000\n"
+    " 0.0100000 0.0100000 0.0200000 0.0300000\n";
 
 TEST(CrgFile, MalformedFilesNameTheirLineAndFault) {
   const std::vector<BadFile> cases{
-      {"a field that is not a number", lrfi(kRoad, kChannels,
-                                                    kRows + " 0.0000000 0.0x00000 0.0000000 0.0000000\n"),
+      {"a field that is not a number",
+       lrfi(kRoad, kChannels, kRows + " 0.0000000 0.0x00000 0.0000000 0.0000000\n"),
        ":17: characters 11-20 (' 0.0x00000') are not a finite number"},
       {"a record with too few numbers", lrfi(kRoad, kChannels, kRows + " 0.0000000 0.0000000\n"),
        ":17: 2 numbers of 10 characters, expected 4"},
@@ -353,8 +353,7 @@ TEST(CrgFile, MalformedFilesNameTheirLineAndFault) {
        ":6: $ROAD_CRG: unknown key REFERENCE_LINE_LENGTH"},
       {"no $KD_Definition", "$CT\nx\n$ROAD_CRG\nREFERENCE_LINE_INCREMENT = 1\n$\n$$$$\n",
        ":1: no $KD_Definition section"},
-      {"END_U and the rows disagree",
-       lrfi("REFERENCE_LINE_END_U = 5\n" + kRoad, kChannels, kRows),
+      {"END_U and the rows disagree", lrfi("REFERENCE_LINE_END_U = 5\n" + kRoad, kChannels, kRows),
        ":4: REFERENCE_LINE_START_U/END_U/INCREMENT make 6 cross sections, the data has 2 rows"},
       {"an unknown channel", lrfi(kRoad, kChannels + "D:reference line torsion,rad\n", kRows),
        ":13: unknown channel 'reference line torsion'"},
@@ -364,7 +363,7 @@ TEST(CrgFile, MalformedFilesNameTheirLineAndFault) {
       {"x without y", lrfi(kRoad, "D:reference line x,m\n" + kChannels, kRows),
        ":7: reference line x and y channels: give both or neither"},
       {"border mode 0 (NaN off the grid)",
-       lrfi(kRoad, kChannels, kRows) .replace(0, 4, "$ROAD_CRG_OPTS\nBORDER_MODE_V = 0\n$\n$CT\n"),
+       lrfi(kRoad, kChannels, kRows).replace(0, 4, "$ROAD_CRG_OPTS\nBORDER_MODE_V = 0\n$\n$CT\n"),
        ":2: BORDER_MODE_V = 0 gives NaN beyond the grid"},
       {"GRID_NAN_MODE 0 (NaN kept)",
        lrfi(kRoad, kChannels, kRows).replace(0, 4, "$ROAD_CRG_MODS\nGRID_NAN_MODE = 0\n$\n$CT\n"),
