@@ -16,7 +16,6 @@
 namespace rig::io::config {
 namespace {
 
-using model::road::FrictionField;
 using model::road::Surface;
 
 /// The ISO 8608 grid's bounds: its generation factors a coherence matrix of every long section
