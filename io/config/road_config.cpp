@@ -21,7 +21,7 @@ using model::road::Surface;
 /// The ISO 8608 grid's bounds: its generation factors a coherence matrix of every long section
 /// pair per frequency (model/road/iso8608.h), so the long sections are few.
 constexpr int kMaxIsoLongSections = 201;
-constexpr double kMaxIsoCells = 4e7;
+constexpr double kMaxIsoCells = 2e7;
 
 // ---- OpenDRIVE, obstacles, friction zones (io/config/opendrive_file.h, road_obstacles.h,
 // road_friction_zones.h)

@@ -42,14 +42,46 @@ void reference_points(const CrgData& d, std::vector<double>& x, std::vector<doub
 }  // namespace
 
 CrgReferenceLine::CrgReferenceLine(const CrgData& data)
-    : u_first_m_(data.u_first_m), du_m_(data.u_increment_m) {
+    : u_first_m_(data.u_first_m),
+      v_first_m_(data.v_m.front()),
+      v_last_m_(data.v_m.back()),
+      du_m_(data.u_increment_m) {
   reference_points(data, node_x_, node_y_);
   build_segments();
+  start_clear_ = grid_behind_end(true);
+  end_clear_ = grid_behind_end(false);
 }
+
+bool CrgReferenceLine::grid_behind_end(bool first) const noexcept {
+  // the grid is the cross sections' edge points and the straight lines between them: it lies
+  // behind the end's cross section if every edge point does
+  const int last = segment_count() - 1;
+  const Segment& g = segments_[static_cast<std::size_t>(first ? 0 : last)];
+  const double ex = first ? node_x_m(0) : node_x_m(last + 1);
+  const double ey = first ? node_y_m(0) : node_y_m(last + 1);
+  const double tolerance = 1e-9 * (1 + du_m_ * (last + 1));
+  for (int i = 0; i <= last + 1; ++i) {
+    for (const double v : {v_first_m_, v_last_m_}) {
+      double x = 0;
+      double y = 0;
+      point(u_first_m_ + i * du_m_, v, x, y);
+      const double ahead = (x - ex) * g.tx + (y - ey) * g.ty;  // along the end's direction
+      if (first ? ahead < -tolerance : ahead > tolerance) return false;
+    }
+  }
+  return true;
+}
+
+bool CrgReferenceLine::beyond_the_ends(int k, const InSegment& s) const noexcept {
+  return (k == 0 && s.before()) || (k == last_ && s.after());
+}
+
+
 
 void CrgReferenceLine::build_segments() {
   const std::size_t n = node_x_.size();
   segments_.resize(n - 1);
+  last_ = static_cast<int>(n) - 2;
   for (std::size_t k = 0; k + 1 < n; ++k) {
     Segment& s = segments_[k];
     s.x0 = node_x_[k];
@@ -76,33 +108,44 @@ void CrgReferenceLine::build_segments() {
   for (std::size_t k = 0; k + 1 < n; ++k) {
     segments_[k].a1 = tangential(k, segments_[k]);
     segments_[k].a2 = tangential(k + 1, segments_[k]);
+    segments_[k].da = segments_[k].a2 - segments_[k].a1;
   }
 }
 
 CrgReferenceLine::InSegment CrgReferenceLine::in_segment(int k, double x_m,
-                                                         double y_m) const noexcept {
+                                                        double y_m) const noexcept {
   const Segment& s = segments_[static_cast<std::size_t>(k)];
   const double qx = x_m - s.x0;
   const double qy = y_m - s.y0;
   InSegment r;
   r.v = -s.ty * qx + s.tx * qy;
   r.w = s.tx * qx + s.ty * qy;
-  r.den = s.length + r.v * (s.a2 - s.a1);
-  r.f = (r.w - r.v * s.a1) / r.den;
+  r.den = s.length + r.v * s.da;
+  r.num = r.w - r.v * s.a1;
   return r;
 }
 
-int CrgReferenceLine::walk(int k, double x_m, double y_m) const noexcept {
+int CrgReferenceLine::walk(int k, double x_m, double y_m, InSegment& s) const noexcept {
   const int last = segment_count() - 1;
+  s = in_segment(k, x_m, y_m);  // the wheel's usual cases first: the same or the next segment
+  if (s.den > 0 && !s.before() && !s.after()) return k;
+  if (s.den > 0 && s.after() && k < last) {
+    s = in_segment(k + 1, x_m, y_m);
+    if (s.den > 0 && !s.before() && (!s.after() || k + 1 == last)) return k + 1;
+  }
   int direction = 0;
   for (int step = 0; step <= last + 1; ++step) {
-    const InSegment s = in_segment(k, x_m, y_m);
-    if (!(s.den > 0)) return search(x_m, y_m);
-    if (s.f < 0 && k > 0) {
+    s = in_segment(k, x_m, y_m);
+    if (!(s.den > 0)) {
+      k = search(x_m, y_m);
+      s = in_segment(k, x_m, y_m);
+      return k;
+    }
+    if (s.before() && k > 0) {
       if (direction > 0) return k;  // between two cross sections that cross: stay
       --k;
       direction = -1;
-    } else if (s.f > 1 && k < last) {
+    } else if (s.after() && k < last) {
       if (direction < 0) return k;
       ++k;
       direction = 1;
@@ -115,16 +158,25 @@ int CrgReferenceLine::walk(int k, double x_m, double y_m) const noexcept {
 
 int CrgReferenceLine::search(double x_m, double y_m) const noexcept {
   const int last = segment_count() - 1;
-  int best = -1;
-  double best_v = std::numeric_limits<double>::infinity();
+  int best_grid = -1;  // between the segment's cross sections and within the grid's width
+  int best = -1;       // any, the straight continuations included
+  double best_grid_v = std::numeric_limits<double>::infinity();
+  double best_v = best_grid_v;
   for (int k = 0; k <= last; ++k) {
     const InSegment s = in_segment(k, x_m, y_m);
-    const bool inside = (s.f >= 0 || k == 0) && (s.f <= 1 || k == last);
-    if (s.den > 0 && inside && std::abs(s.v) < best_v) {
+    const bool between = !s.before() && !s.after();
+    if (!(s.den > 0) || !(between || beyond_the_ends(k, s))) continue;
+    const double v = std::abs(s.v);
+    if (between && s.v >= v_first_m_ && s.v <= v_last_m_ && v < best_grid_v) {
+      best_grid = k;
+      best_grid_v = v;
+    }
+    if (v < best_v) {
       best = k;
-      best_v = std::abs(s.v);
+      best_v = v;
     }
   }
+  if (best_grid >= 0) return best_grid;
   if (best >= 0) return best;
   // nowhere regular (inside a curve beyond its centre): the segment of the nearest point
   double best_d = std::numeric_limits<double>::infinity();
@@ -138,36 +190,47 @@ int CrgReferenceLine::search(double x_m, double y_m) const noexcept {
   return best;
 }
 
-CrgStation CrgReferenceLine::station(int k, double x_m, double y_m) const noexcept {
+CrgStation CrgReferenceLine::station(int k, const InSegment& s, bool beyond) const noexcept {
   const Segment& g = segments_[static_cast<std::size_t>(k)];
-  const InSegment s = in_segment(k, x_m, y_m);
   const double nx = -g.ty;
   const double ny = g.tx;
   CrgStation r;
   r.v_m = s.v;
   r.dv_dx = nx;
   r.dv_dy = ny;
-  const int last = segment_count() - 1;
-  if ((k == 0 && s.f < 0) || (k == last && s.f > 1)) {  // the straight continuation
+  if (beyond) {  // the straight continuation
     const double from_m = k == 0 ? s.w : s.w - g.length;
-    r.u_m = u_first_m_ + (k == 0 ? 0.0 : (last + 1) * du_m_) + from_m;
+    r.u_m = u_first_m_ + (k == 0 ? 0.0 : (last_ + 1) * du_m_) + from_m;
     r.du_dx = g.tx;
     r.du_dy = g.ty;
     return r;
   }
-  const double f = std::clamp(s.f, 0.0, 1.0);
+  const double inv_den = 1.0 / s.den;
+  const double f = std::clamp(s.num * inv_den, 0.0, 1.0);
   r.u_m = u_first_m_ + (k + f) * du_m_;
+  r.segment = k;
+  r.fraction = f;
   // df/dp = (t - a1 n - f (a2 - a1) n) / (L + v (a2 - a1))
-  const double a = g.a1 + f * (g.a2 - g.a1);
-  r.du_dx = du_m_ * (g.tx - a * nx) / s.den;
-  r.du_dy = du_m_ * (g.ty - a * ny) / s.den;
+  const double a = g.a1 + f * g.da;
+  r.du_dx = du_m_ * (g.tx - a * nx) * inv_den;
+  r.du_dy = du_m_ * (g.ty - a * ny) * inv_den;
   return r;
 }
 
 CrgStation CrgReferenceLine::locate(double x_m, double y_m, int& segment) const noexcept {
-  const int count = segment_count();
-  segment = (segment >= 0 && segment < count) ? walk(segment, x_m, y_m) : search(x_m, y_m);
-  return station(segment, x_m, y_m);
+  InSegment s;
+  if (segment >= 0 && segment <= last_) {
+    segment = walk(segment, x_m, y_m, s);
+    // a continuation beyond an end, but maybe on the grid elsewhere (a road bending back)
+    if (beyond_the_ends(segment, s) && !(segment == 0 && s.before() ? start_clear_ : end_clear_)) {
+      segment = search(x_m, y_m);
+      s = in_segment(segment, x_m, y_m);
+    }
+  } else {
+    segment = search(x_m, y_m);
+    s = in_segment(segment, x_m, y_m);
+  }
+  return station(segment, s, beyond_the_ends(segment, s));
 }
 
 void CrgReferenceLine::point(double u_m, double v_m, double& x_m, double& y_m) const noexcept {

@@ -10,8 +10,13 @@
 ///   p(f, v) = P_k + v m'_k + f (P_k+1 + v m'_k+1 - P_k - v m'_k),   u = u_k + f du,
 /// so v is the distance from the segment (v = (p - P_k) . n_k) and f follows in closed form.
 /// Before the first / beyond the last point the line continues straight along its end
-/// segment (REFLINE_CONTINUATION = 0). Constant after construction; locate() is noexcept and
-/// allocation-free and walks from the probe's last segment.
+/// segment (REFLINE_CONTINUATION = 0). Where several places fit a point (a road that bends back
+/// near itself), the one whose grid holds it wins: a segment with the point between its cross
+/// sections and within the grid's width, the nearest such (least |v|); else the nearest of all,
+/// the straight continuations included. Constant after construction; locate() is noexcept and
+/// allocation-free and walks from the probe's last segment (a rolling wheel costs a step); it
+/// searches all segments only without a hint, or when the walk ends on a continuation beyond an
+/// end across whose last cross section parts of the grid lie (a road that bends back).
 
 #include <vector>
 
@@ -27,6 +32,10 @@ struct CrgStation {
   double du_dy = 0;
   double dv_dx = 0;
   double dv_dy = 1;
+  /// Between the cross sections `segment` and `segment` + 1, at `fraction` (0..1) of the way;
+  /// -1 on a straight continuation beyond an end.
+  int segment = -1;
+  double fraction = 0;
 };
 
 class CrgReferenceLine {
@@ -42,13 +51,9 @@ class CrgReferenceLine {
   /// last).
   [[nodiscard]] double heading_rad(double u_m) const noexcept;
 
-  [[nodiscard]] int segment_count() const noexcept { return static_cast<int>(segments_.size()); }
-  [[nodiscard]] double node_x_m(int i) const noexcept {
-    return node_x_[static_cast<std::size_t>(i)];
-  }
-  [[nodiscard]] double node_y_m(int i) const noexcept {
-    return node_y_[static_cast<std::size_t>(i)];
-  }
+  [[nodiscard]] int segment_count() const noexcept { return last_ + 1; }
+  [[nodiscard]] double node_x_m(int i) const noexcept { return node_x_[static_cast<std::size_t>(i)]; }
+  [[nodiscard]] double node_y_m(int i) const noexcept { return node_y_[static_cast<std::size_t>(i)]; }
 
  private:
   /// A segment P_k -> P_k+1: its start, unit tangent t, length, and the tangential parts a1, a2
@@ -61,23 +66,37 @@ class CrgReferenceLine {
     double length = 1;
     double a1 = 0;
     double a2 = 0;
+    double da = 0;  ///< a2 - a1
   };
   /// A point in segment k: fraction f along it (0..1 inside), distance v, and the denominator
   /// L + v (a2 - a1) (<= 0: beyond where neighbouring cross sections cross).
   struct InSegment {
-    double f = 0;
     double v = 0;
-    double w = 0;  ///< distance along the tangent from the segment's start
+    double w = 0;    ///< distance along the tangent from the segment's start
+    double num = 0;  ///< w - v a1: f = num / den, so that the walk needs no division
     double den = 1;
+    [[nodiscard]] bool before() const noexcept { return num < 0; }
+    [[nodiscard]] bool after() const noexcept { return num > den; }
   };
 
   void build_segments();
   [[nodiscard]] InSegment in_segment(int k, double x_m, double y_m) const noexcept;
-  [[nodiscard]] int walk(int k, double x_m, double y_m) const noexcept;
+  /// The segment the walk from k ends in, and the point in it (`s`): at once where the probe is
+  /// still in segment k or has moved into a neighbour (a rolling wheel), else step by step.
+  [[nodiscard]] int walk(int k, double x_m, double y_m, InSegment& s) const noexcept;
   [[nodiscard]] int search(double x_m, double y_m) const noexcept;
-  [[nodiscard]] CrgStation station(int k, double x_m, double y_m) const noexcept;
+  [[nodiscard]] CrgStation station(int k, const InSegment& s, bool beyond) const noexcept;
+  [[nodiscard]] bool beyond_the_ends(int k, const InSegment& s) const noexcept;
+  /// Whether the whole grid lies behind the first / last cross section (then no point beyond it
+  /// can be on the grid).
+  [[nodiscard]] bool grid_behind_end(bool first) const noexcept;
 
+  int last_ = 0;  ///< the last segment
   double u_first_m_ = 0;
+  double v_first_m_ = 0;  ///< the grid's width (right and left edges)
+  double v_last_m_ = 0;
+  bool start_clear_ = true;  ///< grid_behind_end(true)
+  bool end_clear_ = true;
   double du_m_ = 1;
   std::vector<double> node_x_;
   std::vector<double> node_y_;

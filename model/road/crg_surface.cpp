@@ -49,6 +49,10 @@ CrgSurface::CrgSurface(const CrgData& data, const Placement& placement)
       nu_(static_cast<int>(data.nu())),
       z_ref_(reference_heights(data)),
       bank_(data.nu(), data.start_bank) {
+  inv_du_ = 1.0 / du_m_;
+  smoothing_ = options_.smooth_ubeg_m > 0 || options_.smooth_uend_m > 0;
+  inv_dv_ = 1.0 / dv_m_;
+  for (std::size_t j = 0; j + 1 < v_.size(); ++j) inv_dv_cell_.push_back(1.0 / (v_[j + 1] - v_[j]));
   if (!data.banking.empty()) bank_ = data.banking;
   for (double& b : bank_) b *= data.mods.scale_banking;
   fill_nans(data);
@@ -96,11 +100,11 @@ SurfaceHeight CrgSurface::height(double x_m, double y_m, SurfaceHint& hint) cons
   const double fx = cos_ * qx + sin_ * qy + ref_x_m_;
   const double fy = -sin_ * qx + cos_ * qy + ref_y_m_;
   const CrgStation s = line_.locate(fx, fy, hint.i);
-  const UvHeight h = at_uv(s.u_m, s.v_m, hint.j);
+  const UvHeight h = evaluate(u_axis(s), v_axis(s.v_m, hint.j));
   const double gx = h.dz_du * s.du_dx + h.dz_dv * s.dv_dx;
   const double gy = h.dz_du * s.du_dy + h.dz_dv * s.dv_dy;
   // the gradient back into the road frame: R(rotation) g
-  return {h.z_m + dz_m_, cos_ * gx - sin_ * gy, sin_ * gx + cos_ * gy};
+  return {h.absolute ? h.z_m : h.z_m + dz_m_, cos_ * gx - sin_ * gy, sin_ * gx + cos_ * gy};
 }
 
 void CrgSurface::world_point(double u_m, double v_m, double& x_m, double& y_m) const noexcept {
@@ -111,6 +115,16 @@ void CrgSurface::world_point(double u_m, double v_m, double& x_m, double& y_m) c
   fy -= ref_y_m_;
   x_m = cos_ * fx - sin_ * fy + tx_m_;
   y_m = sin_ * fx + cos_ * fy + ty_m_;
+}
+
+CrgSurface::AxisPoint CrgSurface::u_axis(const CrgStation& s) const noexcept {
+  if (s.segment < 0) return u_axis(s.u_m);
+  AxisPoint p;
+  p.cell = s.segment;
+  p.frac = s.fraction;
+  p.dfrac = inv_du_;
+  p.mapped = s.u_m;
+  return p;
 }
 
 CrgSurface::AxisPoint CrgSurface::u_axis(double u_m) const noexcept {
@@ -136,16 +150,15 @@ CrgSurface::AxisPoint CrgSurface::u_axis(double u_m) const noexcept {
       p.dmapped = 0;
     }
   }
-  const double t = (p.mapped - u_first_m_) / du_m_;
-  p.cell = std::clamp(static_cast<int>(std::floor(t)), 0, nu_ - 2);
+  const double t = (p.mapped - u_first_m_) * inv_du_;
+  p.cell = std::clamp(static_cast<int>(t), 0, nu_ - 2);  // t >= 0: truncation is floor
   p.frac = std::clamp(t - p.cell, 0.0, 1.0);
-  p.dfrac = p.dmapped / du_m_;
+  p.dfrac = p.dmapped * inv_du_;
   return p;
 }
 
 int CrgSurface::v_cell_of(double v_m, int v_cell) const noexcept {
-  if (v_equal_)
-    return std::clamp(static_cast<int>(std::floor((v_m - v_.front()) / dv_m_)), 0, nv_ - 2);
+  if (v_equal_) return std::clamp(static_cast<int>((v_m - v_.front()) * inv_dv_), 0, nv_ - 2);
   if (v_cell < 0 || v_cell > nv_ - 2) {
     const auto it = std::upper_bound(v_.begin() + 1, v_.end() - 1, v_m);
     return static_cast<int>(it - v_.begin()) - 1;
@@ -160,6 +173,14 @@ CrgSurface::AxisPoint CrgSurface::v_axis(double v_m, int& v_cell) const noexcept
   p.mapped = v_m;
   const double first = v_.front();
   const double last = v_.back();
+  if (v_equal_ && v_m >= first && v_m <= last) {  // the usual case: on the grid, equal cells
+    const double t = (v_m - first) * inv_dv_;
+    v_cell = std::min(static_cast<int>(t), nv_ - 2);
+    p.cell = v_cell;
+    p.frac = std::min(t - v_cell, 1.0);
+    p.dfrac = inv_dv_;
+    return p;
+  }
   const double span = last - first;
   if (v_m < first || v_m > last) {
     if (options_.border_v == CrgBorderMode::kRepeat) {
@@ -182,10 +203,9 @@ CrgSurface::AxisPoint CrgSurface::v_axis(double v_m, int& v_cell) const noexcept
   }
   v_cell = v_cell_of(p.mapped, v_cell);
   p.cell = v_cell;
-  const double lo = v_[static_cast<std::size_t>(v_cell)];
-  const double width = v_[static_cast<std::size_t>(v_cell) + 1] - lo;
-  p.frac = std::clamp((p.mapped - lo) / width, 0.0, 1.0);
-  p.dfrac = p.dmapped / width;
+  const double inv_width = inv_dv_cell_[static_cast<std::size_t>(v_cell)];
+  p.frac = std::clamp((p.mapped - v_[static_cast<std::size_t>(v_cell)]) * inv_width, 0.0, 1.0);
+  p.dfrac = p.dmapped * inv_width;
   return p;
 }
 
@@ -215,15 +235,17 @@ void CrgSurface::smooth(const AxisPoint& u, UvHeight& h) const noexcept {
 }
 
 CrgSurface::UvHeight CrgSurface::at_uv(double u_m, double v_m, int& v_cell) const noexcept {
-  const AxisPoint u = u_axis(u_m);
-  const AxisPoint v = v_axis(v_m, v_cell);
+  return evaluate(u_axis(u_m), v_axis(v_m, v_cell));
+}
+
+CrgSurface::UvHeight CrgSurface::evaluate(const AxisPoint& u, const AxisPoint& v) const noexcept {
   UvHeight h;
   const double offset_m = (u.outside ? options_.border_offset_u_m : 0.0) +
                           (v.outside ? options_.border_offset_v_m : 0.0);
   if ((u.outside && options_.border_u == CrgBorderMode::kZero) ||
       (v.outside && options_.border_v == CrgBorderMode::kZero)) {
     h.z_m = offset_m;  // BORDER_MODE 1: the offset alone
-    smooth(u, h);
+    h.absolute = true;
     return h;
   }
   // bilinear in the cell (OpenCRG's crgEvaluv2z)
@@ -239,7 +261,7 @@ CrgSurface::UvHeight CrgSurface::at_uv(double u_m, double v_m, int& v_cell) cons
   h.dz_dv = (along_v + twist * u.frac) * v.dfrac;
   add_reference_terms(u, v, h);
   h.z_m += offset_m;
-  smooth(u, h);
+  if (smoothing_) smooth(u, h);
   return h;
 }
 

@@ -6,7 +6,8 @@
 /// with z_ref the integrated slope channel (z_ref,i = z_ref,i-1 + slope_i du, from
 /// REFERENCE_LINE_START_Z) and banking, both linear between cross sections, v clamped to the
 /// grid's width for the banking term. Off the grid the $ROAD_CRG_OPTS border modes apply
-/// (model/road/crg_data.h), then BORDER_SMOOTH_UBEG/UEND. NaN cells are filled once, at
+/// (model/road/crg_data.h; BORDER_MODE 1: z = the offsets, not moved by a placement), then
+/// BORDER_SMOOTH_UBEG/UEND. NaN cells are filled once, at
 /// construction, by GRID_NAN_MODE. The gradient is that of the evaluated (piecewise bilinear)
 /// surface, exact: dz/dx = dz/du du/dx + dz/dv dv/dx.
 ///
@@ -40,6 +41,9 @@ class CrgSurface final : public Surface {
     double z_m = 0;
     double dz_du = 0;
     double dz_dv = 0;
+    /// BORDER_MODE 1 gave the height: the offset itself, in the road frame too (a placed patch
+    /// surrounded by z = offset, as OpenCRG returns it).
+    bool absolute = false;
   };
   [[nodiscard]] UvHeight at_uv(double u_m, double v_m, int& v_cell) const noexcept;
 
@@ -63,6 +67,9 @@ class CrgSurface final : public Surface {
     bool outside = false;
   };
   [[nodiscard]] AxisPoint u_axis(double u_m) const noexcept;
+  /// u_axis of a point the reference line placed between two cross sections (no search).
+  [[nodiscard]] AxisPoint u_axis(const CrgStation& s) const noexcept;
+  [[nodiscard]] UvHeight evaluate(const AxisPoint& u, const AxisPoint& v) const noexcept;
   [[nodiscard]] AxisPoint v_axis(double v_m, int& v_cell) const noexcept;
   [[nodiscard]] int v_cell_of(double v_m, int v_cell) const noexcept;
   void add_reference_terms(const AxisPoint& u, const AxisPoint& v, UvHeight& h) const noexcept;
@@ -75,14 +82,18 @@ class CrgSurface final : public Surface {
   double u_first_m_ = 0;
   double u_last_m_ = 0;
   double du_m_ = 1;
+  double inv_du_ = 1;
   std::vector<double> v_;
-  bool v_equal_ = true;  ///< equally spaced long sections: cell by division
+  std::vector<double> inv_dv_cell_;  ///< 1 / the width of each long-section cell
+  bool v_equal_ = true;  ///< equally spaced long sections: cell by multiplication
   double dv_m_ = 1;
+  double inv_dv_ = 1;
   int nv_ = 0;
   int nu_ = 0;
-  std::vector<float> z_;       ///< the grid, NaN cells filled, SCALE_Z_GRID applied
-  std::vector<double> z_ref_;  ///< reference line height per cross section
-  std::vector<double> bank_;   ///< banking per cross section
+  std::vector<float> z_;        ///< the grid, NaN cells filled, SCALE_Z_GRID applied
+  std::vector<double> z_ref_;   ///< reference line height per cross section
+  std::vector<double> bank_;    ///< banking per cross section
+  bool smoothing_ = false;      ///< BORDER_SMOOTH_UBEG or _UEND given
   // placement: p_file = R(-rot) (p_world - t) + p_ref, z_world = z_file + dz
   double cos_ = 1;
   double sin_ = 0;

@@ -14,7 +14,7 @@
 /// line have G_d(n) = C n^-2 has the 2-D spectrum (C/2) kappa^-3, and the cross spectrum of two
 /// parallel profiles a distance d apart is G_d(n) gamma(n, d) with
 ///     gamma(n, d) = 2 pi n d K_1(2 pi n d)        (K_1: modified Bessel function, 2nd kind),
-/// real, 1 at d = 0, falling with n d (0.5 at n d = 0.19): long waves lift both tracks alike
+/// real, 1 at d = 0, falling with n d (0.5 at n d = 0.20): long waves lift both tracks alike
 /// (heave), short ones differ (roll).
 ///
 /// Generation (spectral, exact in the model's statistics on the grid): for each frequency n_k =

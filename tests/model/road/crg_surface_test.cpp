@@ -148,6 +148,24 @@ TEST(CrgSurface, LocateInvertsTheUvMapInsideEverySegment) {
   }
 }
 
+TEST(CrgSurface, ARoadThatBendsBackFindsItsGridBeyondItsEnd) {
+  // a 344-degree loop: the straight continuation beyond its end runs across its start
+  const CrgData d = arc(24, 10.0, 0.26);
+  const CrgSurface s(d);
+  for (int i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < d.nv(); ++j) {
+      double x = 0;
+      double y = 0;
+      s.world_point(10.0 * i, d.v_m[j], x, y);
+      SurfaceHint from_the_end;
+      from_the_end.i = 22;  // a wheel that has just left the grid's end
+      EXPECT_NEAR(s.height(x, y, from_the_end).z_m, z_at(d, i, j), 1e-12) << i << " " << j;
+      SurfaceHint none;
+      EXPECT_NEAR(s.height(x, y, none).z_m, z_at(d, i, j), 1e-12) << i << " " << j;
+    }
+  }
+}
+
 TEST(CrgSurface, AnyHintGivesTheSameHeight) {
   const CrgData d = arc(40, 1.0, 0.03);
   const CrgSurface s(d);
@@ -204,8 +222,8 @@ TEST(CrgSurface, BorderModesBeyondTheEndsAndSides) {
   SurfaceHint hint;
   {
     const CrgSurface keep(d);  // default: keep the last cross / long section, plus the offset
-    EXPECT_NEAR(keep.height(-3.0, 0.5, hint).z_m, 0.5 * (z_at(d, 0, 1) + z_at(d, 0, 2)) + 0.1,
-                1e-15);
+    EXPECT_NEAR(keep.height(-3.0, 0.5, hint).z_m,
+                0.5 * (z_at(d, 0, 1) + z_at(d, 0, 2)) + 0.1, 1e-15);
     EXPECT_EQ(keep.height(-3.0, 0.5, hint).dz_dx, 0.0);
     EXPECT_NEAR(keep.height(2.0, -4.0, hint).z_m, z_at(d, 2, 0) + 0.2, 1e-15);
     EXPECT_NEAR(keep.height(9.0, 4.0, hint).z_m, z_at(d, 4, 2) + 0.3, 1e-15);
