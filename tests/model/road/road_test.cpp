@@ -11,7 +11,7 @@ namespace rig::model::road {
 namespace {
 
 TEST(Road, TenPercentGradeTiltsGravityByAtanOfTheGrade) {
-  const Road road({0.1, 0.0, 0.8, -1.0, 9.81});
+  const Road road({0.1, 0.0, 0.8, -1.0, 9.81, nullptr, nullptr});
   const Eigen::Vector3d& g = road.gravity_mps2();
   // on a grade of angle a = atan(0.1): g sin(a) down the slope (-x), g cos(a) into the road
   EXPECT_NEAR(g.x(), -9.81 * 0.1 / std::sqrt(1.01), 1e-14);
@@ -25,7 +25,7 @@ TEST(Road, TenPercentGradeTiltsGravityByAtanOfTheGrade) {
 }
 
 TEST(Road, BankTiltsGravityToTheLowSideAndSplitMuActsOnTheRight) {
-  const Road road({0.0, 0.05, 1.0, 0.2, 9.81});
+  const Road road({0.0, 0.05, 1.0, 0.2, 9.81, nullptr, nullptr});
   const Eigen::Vector3d& g = road.gravity_mps2();
   // uphill in +y: gravity pulls towards -y by g sin(atan(0.05))
   EXPECT_NEAR(g.y(), -9.81 * 0.05 / std::sqrt(1.0025), 1e-14);
@@ -36,7 +36,7 @@ TEST(Road, BankTiltsGravityToTheLowSideAndSplitMuActsOnTheRight) {
 }
 
 TEST(Road, QueriesAllocateNothing) {
-  const Road road({0.1, 0.02, 0.9, 0.3, 9.81});
+  const Road road({0.1, 0.02, 0.9, 0.3, 9.81, nullptr, nullptr});
   double sum = 0;
   Eigen::internal::set_is_malloc_allowed(false);
   const rig::test::AllocationCounter counter;
