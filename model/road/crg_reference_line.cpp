@@ -111,7 +111,7 @@ void CrgReferenceLine::build_segments() {
 }
 
 CrgReferenceLine::InSegment CrgReferenceLine::in_segment(int k, double x_m,
-                                                         double y_m) const noexcept {
+                                                        double y_m) const noexcept {
   const Segment& s = segments_[static_cast<std::size_t>(k)];
   const double qx = x_m - s.x0;
   const double qy = y_m - s.y0;

@@ -175,6 +175,11 @@ bool OpenDriveReferenceLine::in_element(double s_m, int element) const noexcept 
          (element + 1 == n || s_m < elements_[element + 1].g.s_m);
 }
 
+int OpenDriveReferenceLine::nearest_knot(const Element& e, double ds_m) noexcept {
+  const double k = std::floor(ds_m / e.knot_step_m + 0.5);
+  return static_cast<int>(std::clamp(k, 0.0, static_cast<double>(e.knot_count - 1)));
+}
+
 int OpenDriveReferenceLine::find(double s_m, int hint) const noexcept {
   const int n = element_count();
   auto covers = [&](int i) {
@@ -258,8 +263,8 @@ ReferencePose OpenDriveReferenceLine::spiral(const Element& e, double ds_m) cons
   // from the nearest knot k: heading hdg_k + psi(d), psi(d) = kappa_k d + rate d^2 / 2 (small);
   // the position adds the integral of (cos psi, sin psi) over [0, d] by 3-point Gauss-Legendre
   const OpenDriveGeometry& g = e.g;
-  const int k = std::clamp(static_cast<int>(ds_m / e.knot_step_m + 0.5), 0, e.knot_count - 1);
-  const Knot& knot = knots_[static_cast<std::size_t>(e.first_knot + k)];
+  const int k = nearest_knot(e, ds_m);
+  const Knot& knot = knots_[static_cast<std::size_t>(e.first_knot) + static_cast<std::size_t>(k)];
   const double kappa_k = g.curv_start_1pm + e.spiral_rate * k * e.knot_step_m;
   const double d = ds_m - k * e.knot_step_m;
   const double half_rate = 0.5 * e.spiral_rate;
@@ -287,9 +292,10 @@ ReferencePose OpenDriveReferenceLine::spiral(const Element& e, double ds_m) cons
 
 ReferencePose OpenDriveReferenceLine::poly3(const Element& e, double ds_m) const noexcept {
   const OpenDriveGeometry& g = e.g;
-  const int k = std::clamp(static_cast<int>(ds_m / e.knot_step_m + 0.5), 0, e.knot_count - 1);
-  const double u = poly3_u_at(g, knots_[static_cast<std::size_t>(e.first_knot + k)].x,
-                              ds_m - k * e.knot_step_m, false);
+  const int k = nearest_knot(e, ds_m);
+  const double u =
+      poly3_u_at(g, knots_[static_cast<std::size_t>(e.first_knot) + static_cast<std::size_t>(k)].x,
+                 ds_m - k * e.knot_step_m, false);
   const double v = cubic(g.a, g.b, g.c, g.d, u);
   const double slope = cubic_slope(g.b, g.c, g.d, u);
   const double w = 1.0 + slope * slope;

@@ -74,6 +74,7 @@ class OpenDriveReferenceLine {
   void add_spiral_knots(const Element& e);
   void add_poly3_knots(const Element& e);
   [[nodiscard]] int find(double s_m, int hint) const noexcept;
+  [[nodiscard]] static int nearest_knot(const Element& e, double ds_m) noexcept;
   [[nodiscard]] ReferencePose local(const Element& e, double ds_m) const noexcept;
   [[nodiscard]] static ReferencePose arc(const Element& e, double ds_m) noexcept;
   [[nodiscard]] ReferencePose spiral(const Element& e, double ds_m) const noexcept;

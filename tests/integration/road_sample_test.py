@@ -20,6 +20,10 @@ and from ISO 8608:
              scipy); the tracks' coherence follows the isotropic model 2 pi n d K1(2 pi n d);
              the same seed gives the same road, another seed another
   plane      the [model] road_* plane (split mu on y < 0) and a [road] plane with a grade
+  opendrive  an OpenDRIVE road (tests/io/config/opendrive/test_track.xodr, road "2": a 5 % grade
+             and 0.04 rad superelevation) placed at the origin, with a cleat, a bump, a mu-split
+             and a mu-jump: heights, normals and mu against this script's own formulas, the
+             cleat's edges exactly where they are
   bad_input  bad POINTS.csv and bad [road] sections: exit 2, `file:line: what`, nothing on stdout
 """
 
@@ -340,6 +344,39 @@ def case_plane():
     print("ok: planes")
 
 
+def case_opendrive():
+    track = os.path.join(SRC, "tests", "io", "config", "opendrive", "test_track.xodr")
+    road = (f'[road]\nkind = "opendrive"\nfile = "{track}"\nroad_id = "2"\nfriction = 0.9\n'
+            '[road.placement]\nu_m = 20.0\nv_m = -1.75\n'
+            '[[road.obstacle]]\nkind = "cleat"\ns_m = 5.0\nlength_m = 0.02\nwidth_m = 2.0\n'
+            'height_m = 0.02\n'
+            '[[road.obstacle]]\nkind = "bump"\ns_m = 10.0\nlength_m = 2.0\nheight_m = 0.1\n'
+            '[[road.friction_zone]]\nmu = 0.2\nv_to_m = 0.0\n'
+            '[[road.friction_zone]]\nmu = 0.5\ns_from_m = 30.0\n')
+    xy = [(x, y) for x in (-3.0, 0.0, 4.999, 5.0, 5.01, 5.02, 5.021, 10.5, 11.0, 11.7, 29.9, 30.0,
+                           60.0, 130.0) for y in (-2.0, -1.0, 0.0, 0.5, 1.0, 1.001)]
+    rows = sample(config(road), xy)
+    tan_phi = math.tan(0.04)
+    for (x, y), row in zip(xy, rows):
+        # the road point (s, t) = (20 + x, -1.75 + y) at height 1 + 0.05 s + t tan(phi), shifted
+        # so that the placement's reference point is at z = 0; held beyond the road's end s = 100
+        s = min(20.0 + x, 100.0)
+        z = 0.05 * (s - 20.0) + y * tan_phi
+        dz_dx = 0.05 if 20.0 + x < 100.0 else 0.0
+        if 5.0 <= x <= 5.02 and abs(y) <= 1.0:
+            z += 0.02  # the cleat: a block with vertical walls, on top at its edges
+        if 10.0 <= x <= 12.0:
+            z += 0.05 * (1 - math.cos(math.pi * (x - 10.0)))
+            dz_dx += 0.05 * math.pi * math.sin(math.pi * (x - 10.0))
+        n = np.array([-dz_dx, -tan_phi, 1.0])
+        n /= np.linalg.norm(n)
+        mu = 0.5 if x >= 30.0 else (0.2 if y <= 0.0 else 0.9)
+        check(abs(row[2] - z) < 1e-9, f"z at ({x}, {y}): {row[2]} != {z}")
+        check(np.allclose(row[3:6], n, atol=1e-9), f"normal at ({x}, {y}): {row[3:6]} != {n}")
+        check(row[6] == mu, f"mu at ({x}, {y}): {row[6]} != {mu}")
+    print(f"ok: OpenDRIVE road with obstacles and friction zones, {len(xy)} points")
+
+
 def expect_error(cfg, points_text, *parts):
     r, pts = run_sample(cfg, points_text)
     check(r.returncode == 2, f"exit {r.returncode} for {parts}: {r.stderr}")
@@ -378,7 +415,7 @@ def case_bad_input():
 
 CASES = {"nodes": case_nodes, "slope_bank": case_slope_bank, "curvature": case_curvature,
          "placement": case_placement, "iso8608": case_iso8608, "plane": case_plane,
-         "bad_input": case_bad_input}
+         "bad_input": case_bad_input, "opendrive": case_opendrive}
 if CASE not in CASES:
     fail(f"unknown case {CASE}")
 CASES[CASE]()

@@ -27,10 +27,11 @@ std::shared_ptr<const OpenDriveSurface> road(const char* id) {
                                                  {});
 }
 
-/// Points 0.03 m apart (30 m/s at 1 ms) along the road, t = 1 m.
-std::vector<Eigen::Vector2d> rolling_points(const OpenDriveSurface& surface, double length_m) {
+/// Points 0.03 m apart (30 m/s at 1 ms) along the road from s0 to s1, t = 1 m.
+std::vector<Eigen::Vector2d> rolling_points(const OpenDriveSurface& surface, double s1_m,
+                                            double s0_m = 0) {
   std::vector<Eigen::Vector2d> out;
-  for (double s = 0; s < length_m; s += 0.03) out.push_back(surface.position(s, 1.0));
+  for (double s = s0_m; s < s1_m; s += 0.03) out.push_back(surface.position(s, 1.0));
   return out;
 }
 
@@ -52,6 +53,24 @@ void BM_OpenDriveTrackRolling(benchmark::State& state) {
   state.SetLabel("track, hint kept (a rolling wheel's probe)");
 }
 BENCHMARK(BM_OpenDriveTrackRolling);
+
+/// One geometry of the track at a time: line, clothoid, arc, paramPoly3, poly3.
+void BM_OpenDriveGeometry(benchmark::State& state) {
+  struct Piece {
+    const char* name;
+    double s0, s1;
+  };
+  static constexpr Piece kPieces[] = {{"line", 2, 38},
+                                      {"spiral", 42, 68},
+                                      {"arc", 72, 108},
+                                      {"paramPoly3", 142, 168},
+                                      {"poly3", 172, 193}};
+  const Piece& piece = kPieces[state.range(0)];
+  const auto surface = road("1");
+  query(state, *surface, rolling_points(*surface, piece.s1, piece.s0), true);
+  state.SetLabel(piece.name);
+}
+BENCHMARK(BM_OpenDriveGeometry)->DenseRange(0, 4);
 
 void BM_OpenDriveTrackNoHint(benchmark::State& state) {
   const auto surface = road("1");

@@ -222,8 +222,8 @@ TEST(CrgSurface, BorderModesBeyondTheEndsAndSides) {
   SurfaceHint hint;
   {
     const CrgSurface keep(d);  // default: keep the last cross / long section, plus the offset
-    EXPECT_NEAR(keep.height(-3.0, 0.5, hint).z_m, 0.5 * (z_at(d, 0, 1) + z_at(d, 0, 2)) + 0.1,
-                1e-15);
+    EXPECT_NEAR(keep.height(-3.0, 0.5, hint).z_m,
+                0.5 * (z_at(d, 0, 1) + z_at(d, 0, 2)) + 0.1, 1e-15);
     EXPECT_EQ(keep.height(-3.0, 0.5, hint).dz_dx, 0.0);
     EXPECT_NEAR(keep.height(2.0, -4.0, hint).z_m, z_at(d, 2, 0) + 0.2, 1e-15);
     EXPECT_NEAR(keep.height(9.0, 4.0, hint).z_m, z_at(d, 4, 2) + 0.3, 1e-15);
