@@ -36,8 +36,8 @@ int straight(const char* vehicle, const char* crg) {
     rig::model::road::Placement at;
     at.given = true;
     at.x_m = rig::test::kRoadBenchBlockX;
-    p.road.surface = std::make_shared<rig::model::road::CrgSurface>(
-        rig::io::config::load_crg_file(crg), at);
+    p.road.surface =
+        std::make_shared<rig::model::road::CrgSurface>(rig::io::config::load_crg_file(crg), at);
   }
   rig::model::vehicle::VehicleModel m(p, 1e-3);
   Signals s = rig::test::straight_inputs();
