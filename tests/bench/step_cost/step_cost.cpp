@@ -19,7 +19,6 @@
 
 namespace {
 
-using rig::model::Signal;
 using rig::model::Signals;
 
 }  // namespace
