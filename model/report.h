@@ -32,6 +32,13 @@ struct WheelReport {
   double lat_speed_mps = 0;     ///< contact point velocity lateral, v_y
   double rolling_radius_m = 0;  ///< dynamic rolling radius r_D
   double tire_load_n = 0;       ///< F_z of the step's start, where the characteristic was taken
+  // the road under the wheel: its local plane of the step (road frame; the plane road: z = 0,
+  // e_z, whose grade and bank tilt gravity instead)
+  double road_z_m = 0;       ///< the road's height under the wheel: the plane at the probes' centre
+  double road_normal_x = 0;  ///< upward unit normal of the road there, road frame
+  double road_normal_y = 0;
+  double road_normal_z = 1;
+  double road_mu = 1;  ///< the friction scale the tire takes (1: its data as given)
   /// 1: slip_x, slip_y mean a slip (the wheel moves at least slip_mask_speed_mps); 0: stand-still
   /// or creeping, the raw values are kept but are not slips an ECU should act on
   std::int8_t slip_valid = 1;

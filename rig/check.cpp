@@ -1,5 +1,6 @@
 #include "rig/check.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <iostream>
@@ -9,10 +10,13 @@
 #include "io/can/dbc/dbc_parser.h"
 #include "io/can/mapping/can_mapping.h"
 #include "io/config/config_error.h"
+#include "io/config/crg_file.h"
 #include "io/config/input_file.h"
+#include "io/config/opendrive_file.h"
 #include "io/config/strict_table.h"
 #include "io/config/vehicle_file.h"
 #include "io/lcm/lcm_settings.h"
+#include "model/road/crg_surface.h"
 #include "rig/config.h"
 #include "rig/sinks.h"
 
@@ -127,6 +131,51 @@ void check_dbc(const FileContent& c, std::ostream& notes) {
   for (const auto& warning : database.warnings) notes << "note: " << warning << "\n";
 }
 
+// ---- OpenCRG road surfaces (.crg): the first record that is not a comment opens an OpenCRG
+// section ($CT, $ROAD_CRG, $KD_Definition, ...); the rest may be binary.
+
+bool is_crg(const FileContent& c) {
+  std::string_view text = c.head;
+  while (!text.empty()) {
+    const std::size_t end = std::min(text.find('\n'), text.size());
+    const std::string_view line = text.substr(0, end);
+    text.remove_prefix(std::min(end + 1, text.size()));
+    if (line.find_first_not_of(" \t\r") == std::string_view::npos || line.starts_with('*') ||
+        line.starts_with('%'))
+      continue;
+    std::string word;
+    for (std::size_t i = 1;
+         i < line.size() &&
+         (std::isalnum(static_cast<unsigned char>(line[i])) != 0 || line[i] == '_');
+         ++i)
+      word += static_cast<char>(std::toupper(static_cast<unsigned char>(line[i])));
+    return line.starts_with('$') &&
+           (word == "CT" || word == "KD_DEFINITION" || word.starts_with("ROAD_CRG"));
+  }
+  return false;
+}
+
+void check_crg(const FileContent& c, std::ostream& notes) {
+  const model::road::CrgData data = io::config::load_crg_file(c.path);
+  const model::road::CrgSurface surface(data);  // the reference line and NaN modes apply
+  notes << "note: " << data.nu() << " x " << data.nv() << " grid, u " << data.u_first_m << " .. "
+        << data.u_last_m() << " m, v " << data.v_m.front() << " .. " << data.v_m.back() << " m\n";
+}
+
+// ---- OpenDRIVE roads (config/roads/*.xodr): XML whose root element is <OpenDRIVE>
+
+bool is_opendrive(const FileContent& c) {
+  return !c.toml && c.head.find("<OpenDRIVE") != std::string::npos;
+}
+
+void check_opendrive(const FileContent& c, std::ostream& /*notes*/) {
+  const auto file = io::config::load_opendrive_file(c.path);
+  for (const auto& road : file.roads)  // every road, as the model would build its surface
+    (void)io::config::make_opendrive_surface(file, road.id, {});
+  // as `rig run` shows them: gaps between geometries, ignored profiles
+  for (const auto& warning : file.warnings) std::cerr << "rig: warning: " << warning << "\n";
+}
+
 /// The registry. A new kind of file: one entry (and its recognizer and checker above).
 constexpr std::array kFileKinds{
     FileKind{"run-config",
@@ -143,6 +192,10 @@ constexpr std::array kFileKinds{
              is_can_mapping, check_can_mapping},
     FileKind{"dbc", "a CAN database starting with VERSION, NS_, BU_ or BO_ (config/can/)", is_dbc,
              check_dbc},
+    FileKind{"crg", "an OpenCRG road surface starting with $CT or another OpenCRG section (*.crg)",
+             is_crg, check_crg},
+    FileKind{"opendrive", "XML with the root element <OpenDRIVE> (an ASAM OpenDRIVE road, .xodr)",
+             is_opendrive, check_opendrive},
 };
 
 void print_expected(std::ostream& err) {

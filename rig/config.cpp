@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "io/config/config_error.h"
+#include "io/config/road_config.h"
 #include "io/config/strict_table.h"
 #include "rig/rt/thread_setup.h"
 
@@ -103,6 +104,23 @@ ModelSettings read_model(io::config::StrictTable& t) {
   return m;
 }
 
+/// [road]: the road of the vehicle or of every unit of a combination, instead of the [model]
+/// road_* plane (model/road/DESIGN.md).
+void read_road(io::config::StrictTable& top, RigConfig& c) {
+  auto road = top.optional_table("road");
+  if (!road) return;
+  if (auto m = top.optional_table("model")) io::config::check_no_model_road_keys(*m);
+  if (!c.model.vehicle && !c.model.combination)
+    throw road->error(
+        "needs [model] kind = \"vehicle\" or \"combination\" (the quarter car has "
+        "its own grade)");
+  const model::road::RoadParams params = io::config::read_road_section(*road);
+  if (c.model.vehicle) c.model.vehicle->params.road = params;
+  if (c.model.combination) {
+    for (auto& unit : c.model.combination->units) unit.road = params;
+  }
+}
+
 /// Wheelbase and steering ratio of the configured vehicle, the path driver's defaults.
 driver::PathDriverVehicle path_driver_vehicle(const ModelSettings& m) {
   driver::PathDriverVehicle v;
@@ -184,6 +202,7 @@ RigConfig load_config(const std::filesystem::path& file) {
   c.file = file;
   if (auto t = top.optional_table("rig")) c.rig = read_rig(*t);
   if (auto t = top.optional_table("model")) c.model = read_model(*t);
+  read_road(top, c);
   c.catalogue = std::make_shared<const io::signals::Catalogue>(model_shape(c.model));
   // Routing before the driver: a table column must not be routed to CAN.
   RoutingRequests requests{};

@@ -15,6 +15,7 @@
 
 #include "io/lcm/lcm_settings.h"
 #include "rig/check.h"
+#include "rig/road_sample.h"
 #include "rig/rt/thread_setup.h"
 #include "rig/run.h"
 #include "rig/signals.h"
@@ -107,6 +108,19 @@ const CLI::App* add_signals(CLI::App& app, std::string& config, bool& json) {
   return signals_cmd;
 }
 
+/// `rig road sample --config FILE --xy POINTS.csv`.
+const CLI::App* add_road(CLI::App& app, std::string& config, std::string& points) {
+  auto* road_cmd = app.add_subcommand("road", "the road a run configuration gives its tires");
+  road_cmd->require_subcommand(1);
+  auto* sample_cmd = road_cmd->add_subcommand(
+      "sample",
+      "print x,y,z,nx,ny,nz,mu (height, upward normal, mu scale) at each point of POINTS.csv "
+      "(header x,y, then one point per line)");
+  sample_cmd->add_option("--config", config, "run configuration (TOML)")->required();
+  sample_cmd->add_option("--xy", points, "CSV of points: header x,y")->required();
+  return sample_cmd;
+}
+
 /// --inject-stall CYCLE:MS into `run`.
 void parse_stall(const std::string& stall, rig::RunOptions& run) {
   if (stall.empty()) return;
@@ -133,6 +147,9 @@ int main(int argc, char** argv) {
   std::string signals_config;
   bool signals_json = false;
   const CLI::App* signals_cmd = add_signals(app, signals_config, signals_json);
+  std::string road_config;
+  std::string road_points;
+  const CLI::App* road_sample_cmd = add_road(app, road_config, road_points);
 
   try {
     app.parse(argc, argv);
@@ -146,5 +163,7 @@ int main(int argc, char** argv) {
   }
   if (*check_cmd) return check(check_files, check_kind);
   if (*signals_cmd) return rig::signals_command(signals_config, signals_json, std::cout, std::cerr);
+  if (*road_sample_cmd)
+    return rig::road_sample_command(road_config, road_points, std::cout, std::cerr);
   return rig::run(run);
 }

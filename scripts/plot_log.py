@@ -7,6 +7,10 @@ PNGs to OUTDIR (default CSVDIR) and prints the path of each:
   speed_accel.png   speed and body accelerations of the first unit
   steering.png      steering wheel angle; hand, torsion bar and assist torques
   wheel_slips.png   longitudinal and lateral slip of every wheel
+  road.png          the road under every wheel along the distance travelled: its height (what
+                    each wheel rolled over; the front wheels' traces lead the rear ones' by the
+                    wheelbase), its slopes along x and y from the normal, its friction scale mu
+                    (logs written before the wheel_road_ columns existed have no such figure)
   lateness.png      histogram of loop lateness with the deadline (one period) marked
   misses.png        timeline of deadline misses
 """
@@ -121,6 +125,51 @@ def plot_state(state, out_dir, written):
     save(fig, out_dir, "wheel_slips.png", written)
 
 
+def travelled_m(state):
+    """Distance travelled by unit 0's CG at each row [m] (trapezoidal in its speed)."""
+    t = state["sim_time_s"]
+    v = [math.hypot(vx, vy) for vx, vy in zip(state["unit0_vx_mps"], state["unit0_vy_mps"])]
+    s = [0.0]
+    for k in range(1, len(t)):
+        s.append(s[-1] + 0.5 * (v[k] + v[k - 1]) * (t[k] - t[k - 1]))
+    return s
+
+
+def plot_road(state, out_dir, written):
+    """The road under the wheels: height, slopes (from the local plane's normal) and mu."""
+    wheels = indices(state, "wheel", "_road_z_m")
+    if not wheels:
+        return
+    s = travelled_m(state)
+    heights = [z for w in wheels for z in state[f"wheel{w}_road_z_m"] if math.isfinite(z)]
+    metres = bool(heights) and max(heights) - min(heights) > 0.5  # a hill: m, else mm
+    scale, unit = (1.0, "m") if metres else (1e3, "mm")
+    fig, (ax1, ax2, ax3) = plt.subplots(3, 1, sharex=True, figsize=(9, 8))
+    for w in wheels:
+        unit = int(state[f"wheel{w}_unit"][0]) if f"wheel{w}_unit" in state else 0
+        label = f"wheel {w} (unit {unit})"
+        color = f"C{w % 10}"
+        ax1.plot(s, [scale * z for z in state[f"wheel{w}_road_z_m"]], label=label, linewidth=0.8,
+                 color=color)
+        nx, ny, nz = (state[f"wheel{w}_road_normal_{c}"] for c in "xyz")
+        ax2.plot(s, [-100 * a / c for a, c in zip(nx, nz)], linewidth=0.8, color=color,
+                 label=f"wheel {w}: along x (solid), y (dashed)")
+        ax2.plot(s, [-100 * b / c for b, c in zip(ny, nz)], linestyle="--", linewidth=0.8,
+                 color=color)
+        ax3.plot(s, state[f"wheel{w}_road_mu"], label=label, color=color)
+    ax1.set_ylabel(f"road height [{unit}]")
+    ax1.set_title("The road under each wheel (its local plane: TMeasy's four probes)")
+    ax1.grid(True)
+    ax1.legend(fontsize="small", ncol=2)
+    ax2.set_ylabel("road slope [%]")
+    ax2.grid(True)
+    ax2.legend(fontsize="x-small", ncol=2)
+    ax3.set_ylabel("friction scale mu [-]")
+    ax3.set_xlabel("distance travelled by the CG of unit 0 [m]")
+    ax3.grid(True)
+    save(fig, out_dir, "road.png", written)
+
+
 def plot_timing(state, status, out_dir, written):
     period_s = 0.001
     if status and status["period_s"]:
@@ -179,6 +228,7 @@ def main(argv):
     status = read_columns(status_csv) if status_csv else None
     written = []
     plot_state(state, out_dir, written)
+    plot_road(state, out_dir, written)
     plot_timing(state, status, out_dir, written)
     for path in written:
         print(path)

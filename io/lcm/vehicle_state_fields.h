@@ -82,6 +82,14 @@ struct VehicleStateFields {
       {"wheel_rolling_radius_m", "m", member<&W::rolling_radius_m>, &S::wheel_rolling_radius_m,
        "rolling_radius_m"},
       {"wheel_tire_load_n", "N", member<&W::tire_load_n>, &S::wheel_tire_load_n, "tire_load_n"},
+      {"wheel_road_z_m", "m", member<&W::road_z_m>, &S::wheel_road_z_m, "road_z_m"},
+      {"wheel_road_normal_x", "1", member<&W::road_normal_x>, &S::wheel_road_normal_x,
+       "road_normal_x"},
+      {"wheel_road_normal_y", "1", member<&W::road_normal_y>, &S::wheel_road_normal_y,
+       "road_normal_y"},
+      {"wheel_road_normal_z", "1", member<&W::road_normal_z>, &S::wheel_road_normal_z,
+       "road_normal_z"},
+      {"wheel_road_mu", "1", member<&W::road_mu>, &S::wheel_road_mu, "road_mu"},
   };
 
   /// Per wheel, flags: 1 valid, 0 not.

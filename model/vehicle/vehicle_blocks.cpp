@@ -87,7 +87,7 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
   sequence_.add_stage(wheel_stage_);
 }
 
-void VehicleBlocks::update_contacts() noexcept {
+void VehicleBlocks::update_contacts(double lookahead_s) noexcept {
   const auto& y = state_.framework_y;
   const auto& z = state_.framework_z;
   kinematics_.update(state_, work_);  // eq. (29) at y_V(k), before any contact is evaluated
@@ -96,6 +96,8 @@ void VehicleBlocks::update_contacts() noexcept {
     const auto k = static_cast<std::size_t>(i);
     WheelWork& w = work_.wheels[k];
     const tire::TmeasyParams& t = p_.axles[k / 2].tire.tmeasy;
+    const bool plane = framework_.road().is_plane();
+    if (!plane) w.road = framework_.road_plane(rot, y, z, i, lookahead_s, w.probe_hints);
     const WheelContact c = framework_.contact(rot, y, z, i);
     w.load_n = tire::vertical_tire_force(t.vertical_stiffness_npm, t.vertical_damping_nspm,
                                          c.penetration_m, c.penetration_rate_mps)
@@ -103,7 +105,7 @@ void VehicleBlocks::update_contacts() noexcept {
     tire::TireContact& tc = w.tire;
     tc.kinematics = {c.vx_mps, c.vy_mps, state_.spin_radps[k],
                      tire::dynamic_rolling_radius(t.radius_unloaded_m, c.penetration_m)};
-    w.road_friction = framework_.road().friction(i % 2 == 1);
+    w.road_friction = plane ? framework_.road().friction(i % 2 == 1) : w.road.mu;
     tc.characteristic = tire::characteristic_at(t, w.load_n, w.road_friction);
     const tire::TireSlip slip =
         tire::slip_of(tc.characteristic, tc.kinematics, t.velocity_floor_mps);
@@ -117,8 +119,16 @@ void VehicleBlocks::update_outputs() noexcept {
   const auto& y = state_.framework_y;
   const auto& z = state_.framework_z;
   const Mat3 rot = body_to_road(y(3), y(4), y(5));
-  for (int i = 0; i < work_.wheel_count; ++i)
-    work_.wheels[static_cast<std::size_t>(i)].out = framework_.wheel_forces(rot, y, z, i);
+  const bool plane = framework_.road().is_plane();
+  for (int i = 0; i < work_.wheel_count; ++i) {
+    WheelWork& w = work_.wheels[static_cast<std::size_t>(i)];
+    const WheelContact c = framework_.contact(rot, y, z, i);
+    w.out = framework_.wheel_forces(c, y, z, i);
+    // the plane road is z = 0 of the road frame; else the local plane's height under the
+    // wheel: at its static contact point, the probes' centre (on a 20 mm cleat at most 10 mm,
+    // where the contact point on the tilted plane may lie higher than the cleat)
+    w.road_z_m = plane ? 0.0 : w.road.point_m.z();
+  }
   work_.torsion_bar_torque_nm =
       steering_system_->torsion_bar_torque_nm(state_.steering_y, state_.steering_z);
   work_.assist_torque_nm = steering_system_->assist_torque_nm(state_.steering_y, state_.steering_z);

@@ -45,7 +45,10 @@ class VehicleBlocks {
 
   /// The start of a step: eq. (29) at y_V(k), then every wheel's contact - vertical force,
   /// rolling radius, the tire's characteristic at F_z and mu and f(s) (frozen over the step).
-  void update_contacts() noexcept;
+  /// On a road that is not the plane, first each wheel's local road plane, centred where the
+  /// wheel is `lookahead_s` on (the step h: the step evaluates q at y(k) + h K^-1 z(k), eqs. 6-7;
+  /// 0 for the outputs of a state as it is).
+  void update_contacts(double lookahead_s) noexcept;
   /// The outputs of the current state: every wheel's forces, the torsion bar, assist and engine
   /// torque (workspace).
   void update_outputs() noexcept;

@@ -31,15 +31,24 @@ void VehicleModel::end_settle(const Pose& pose, double speed_mps) noexcept {
   hold_plane_motion(speed_mps);
   state_.acceleration_mps2.setZero();
   saved_ = state_;
-  blocks_->update_contacts();
+  blocks_->update_contacts(0.0);
   blocks_->update_outputs();
 }
 
 Equilibrium VehicleModel::settle(double speed_mps, int gear_request) noexcept {
   const Pose pose = begin_settle(speed_mps);
+  // On a surface the vehicle rolls in place (as on a drum): its x, y held at the pose, so that
+  // it settles on the road where it starts (it would otherwise settle some ten metres on).
+  const bool in_place = static_cast<bool>(p_.road.surface);
   Equilibrium e = settle_loop(
       h_, speed_mps, gear_request, [&](Signals& s) { return step(s) == StepStatus::kOk; },
-      [&] { hold_plane_motion(speed_mps); }, [&] { return state_.acceleration_mps2.x(); });
+      [&] {
+        hold_plane_motion(speed_mps);
+        if (!in_place) return;
+        state_.framework_y(0) = pose.x_m;
+        state_.framework_y(1) = pose.y_m;
+      },
+      [&] { return state_.acceleration_mps2.x(); });
   end_settle(pose, speed_mps);
   e.gear = state_.gear;
   return e;

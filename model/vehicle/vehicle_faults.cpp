@@ -96,7 +96,10 @@ ModelFault FaultCheck::check_body_points(const Eigen::VectorXd& y, double time_s
   const Vec3 cg = y.head<3>();
   for (int i = 0; i < point_count_; ++i) {
     const Vec3 p = cg + r * points_[static_cast<std::size_t>(i)];  // road frame
-    const double height = p.z() - road_.height_m(p.x(), p.y());
+    const auto k = static_cast<std::size_t>(i);
+    const double ground = road_.is_plane() ? road_.height_m(p.x(), p.y())
+                                           : road_.sample(p.x(), p.y(), false, hints_[k]).z_m;
+    const double height = p.z() - ground;
     if (height < 0) return fault(FaultKind::kBodyGround, i, time_s, height, 0);
   }
   return {};

@@ -48,6 +48,9 @@ class FaultCheck {
 
   FaultLimits limits_;
   road::Road road_;
+  /// Each body point's last cell on the road's surface: a cache that only speeds the query up
+  /// (model/road/surface.h: any hint gives the same answer), hence mutable in the const check.
+  mutable std::array<road::SurfaceHint, kMaxBodyPoints> hints_{};
   int wheel_count_ = 0;
   std::array<double, kMaxWheels> spin_limit_radps_{};
   int point_count_ = 0;

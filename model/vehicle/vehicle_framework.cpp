@@ -58,6 +58,8 @@ VehicleFramework::VehicleFramework(const VehicleParams& p, VehicleState& state,
         a.tire.tmeasy.radius_unloaded_m - tire_load / a.tire.tmeasy.vertical_stiffness_npm;
     mount_[k] =
         Vec3(a.position_x_m, (i % 2 == 0 ? 0.5 : -0.5) * a.track_m, centre_height - c.cg_height_m);
+    // Rill 2011 sec. 3.2: probes at 0.1 r_0 fore and aft, 0.3 B left and right
+    probes_[k] = {0.1 * a.tire.tmeasy.radius_unloaded_m, 0.3 * a.tire.tmeasy.bore.contact_width_m};
   }
 }
 
@@ -115,9 +117,29 @@ WheelForces VehicleFramework::wheel_forces(const Vector& y, const Vector& z, int
 WheelContact VehicleFramework::contact(const Mat3& rot, const Vector& y, const Vector& z,
                                        int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  return wheel_contact(road_, rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3),
+  const double r0 = p_.axles[k / 2].tire.tmeasy.radius_unloaded_m;
+  if (road_.is_plane()) {
+    return wheel_contact(road_, rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3),
+                         wheel_centre(i, y(6 + i)), hub_axis(i) * z(6 + i),
+                         work_.wheels[k].spin_axis, r0);
+  }
+  return wheel_contact(work_.wheels[k].road, rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3),
                        wheel_centre(i, y(6 + i)), hub_axis(i) * z(6 + i), work_.wheels[k].spin_axis,
-                       p_.axles[k / 2].tire.tmeasy.radius_unloaded_m);
+                       r0);
+}
+
+LocalRoadPlane VehicleFramework::road_plane(const Mat3& rot, const Vector& y, const Vector& z,
+                                            int i, double lookahead_s,
+                                            ProbeHints& hints) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  const Vec3 r = wheel_centre(i, y(6 + i));
+  const Vec3 velocity = rot * (z.segment<3>(0) + z.segment<3>(3).cross(r));  // road frame
+  const Vec3 centre = y.head<3>() + rot * r + lookahead_s * velocity;
+  const Vec3 spin = rot * work_.wheels[k].spin_axis;
+  const Vec3 heading = spin.cross(Vec3::UnitZ()).normalized();
+  const Vec3 down = spin.cross(heading);  // in the wheel plane, at right angles to the heading
+  const double r0 = p_.axles[k / 2].tire.tmeasy.radius_unloaded_m;
+  return local_road_plane(road_, centre + r0 * down, heading, probes_[k], i % 2 == 1, hints);
 }
 
 WheelForces VehicleFramework::wheel_forces(const Mat3& rot, const Vector& y, const Vector& z,

@@ -44,7 +44,15 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   /// The same at the wheel's contact c (contact(rot, y, z, i)).
   [[nodiscard]] WheelForces wheel_forces(const WheelContact& c, const Vector& y, const Vector& z,
                                          int i) const noexcept;
-  /// Contact kinematics of wheel i at (y, z).
+  /// The local road plane of wheel i (TMeasy's four probes, local_road_plane.h) around its
+  /// static contact point `lookahead_s` on from (y, z): the wheel's lowest point as on a level
+  /// road, r_0 below the centre in the wheel plane, moved with the centre's velocity; fore and
+  /// aft along the wheel's horizontal heading. A function of (y, z) alone. Only for a road that
+  /// is not the plane (road::Road::is_plane).
+  [[nodiscard]] LocalRoadPlane road_plane(const Mat3& rot, const Vector& y, const Vector& z, int i,
+                                          double lookahead_s, ProbeHints& hints) const noexcept;
+  /// Contact kinematics of wheel i at (y, z): on the plane road from the road, else on the
+  /// wheel's local road plane of the step (work.wheels[i].road).
   [[nodiscard]] WheelContact contact(const Vector& y, const Vector& z, int i) const noexcept;
   [[nodiscard]] WheelContact contact(const Mat3& rot, const Vector& y, const Vector& z,
                                      int i) const noexcept;
@@ -88,6 +96,7 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   std::array<int, kMaxWheels> axle_of_{};
   std::array<Vec3, kMaxWheels> mount_{};
   std::array<double, kMaxWheels> preload_{};
+  std::array<ContactProbes, kMaxWheels> probes_{};  ///< dx = 0.1 r_0, dy = 0.3 B per wheel
   Mat3 inertia_;
   double total_mass_kg_ = 0;
   double support_load_n_ = 0;

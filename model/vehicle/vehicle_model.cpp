@@ -6,6 +6,7 @@
 
 #include "model/vehicle/drivetrain.h"
 #include "model/vehicle/gear_selection.h"
+#include "model/vehicle/road_start.h"
 #include "model/vehicle/vehicle_signals.h"
 
 namespace rig::model::vehicle {
@@ -32,8 +33,9 @@ VehicleModel::~VehicleModel() = default;
 
 void VehicleModel::reset(double x_m, double y_m, double yaw_rad) noexcept {
   place_at_rest(state_, p_, x_m, y_m, yaw_rad);
+  place_on_road(state_, p_, blocks_->framework());  // a surface: its height and slope there
   work_.wheels.fill(WheelWork{});
-  blocks_->update_contacts();
+  blocks_->update_contacts(0.0);
   blocks_->update_outputs();
 }
 
@@ -89,7 +91,7 @@ void VehicleModel::begin_step(double h) noexcept {
     state_.lockup_fraction =
         std::min(target, state_.lockup_fraction + ramp);  // closes slowly, opens at once
   work_.lockup_fraction = state_.lockup_fraction;
-  blocks_->update_contacts();
+  blocks_->update_contacts(h);
   blocks_->sequence().begin_step(h);  // eq. (8) up to z^u = M_VI^-1 q of the framework (eq. 46)
 }
 

@@ -116,6 +116,11 @@ void fill_wheel(const VehicleState& state, const VehicleInputs& in, const Vehicl
   r.lat_speed_mps = w.out.tire.lat_speed_mps;
   r.rolling_radius_m = w.out.tire.rolling_radius_m;
   r.tire_load_n = w.load_n;
+  r.road_z_m = w.road_z_m;
+  r.road_normal_x = w.road.normal.x();
+  r.road_normal_y = w.road.normal.y();
+  r.road_normal_z = w.road.normal.z();
+  r.road_mu = w.road_friction;
 }
 
 }  // namespace

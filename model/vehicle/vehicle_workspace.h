@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "model/tire/tmeasy_tire.h"
+#include "model/vehicle/local_road_plane.h"
 #include "model/vehicle/vehicle_state.h"
 
 namespace rig::model::vehicle {
@@ -38,6 +39,12 @@ struct WheelWork {
   // ---- orientation (kinematics, then the wheel-spin stage's tie rods): set_wheel_orientation
   double steer_rad = 0;            ///< gamma: toe + steer from the rack
   Vec3 spin_axis = Vec3::UnitY();  ///< Rz(steer) Rx(camber) e_y, body axes
+  // ---- the road under the wheel (VehicleBlocks::update_contacts at y_V(k)) ----
+  /// The step's local road plane (local_road_plane.h; every contact evaluation of the step uses
+  /// it). On the plane road (road::Road::is_plane) it stays z = 0, e_z: the road is asked directly.
+  LocalRoadPlane road{};
+  ProbeHints probe_hints{};  ///< the four probes' last cells (speed only, not results)
+  double road_z_m = 0;       ///< the road's height under the wheel (update_outputs)
   // ---- the tire at the start of the step (VehicleModel's contacts) ----
   double load_n = 0;         ///< F_z at y_V(k), z_V(k)
   double road_friction = 1;  ///< mu of the road under the wheel (the bore torque's limit)

@@ -207,7 +207,10 @@ class RawCsv final : public ChannelCsv {
 
 std::unique_ptr<ChannelCsv> make_channel_csv(const Event& first) {
   const std::int64_t hash = fingerprint(first);
-  if (hash == rig::vehicle_state_t::getHash()) return make_vehicle_state_csv();
+  if (hash == rig::vehicle_state_t::getHash())
+    return make_vehicle_state_csv(current_vehicle_state_layout());
+  if (const VehicleStateLayout* legacy = legacy_vehicle_state_layout(hash))
+    return make_vehicle_state_csv(*legacy);
   if (hash == rig::signals_t::getHash()) return std::make_unique<SignalsCsv>();
   if (hash == rig::rig_status_t::getHash()) return std::make_unique<StatusCsv>();
   return std::make_unique<RawCsv>();

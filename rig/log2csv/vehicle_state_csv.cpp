@@ -43,28 +43,41 @@ void add_element(CsvLine& line, const std::vector<Value>& v, std::size_t i) {
 }
 
 /// The columns of an array group, element by element: unit0_x_m, unit0_y_m, ..., unit1_x_m.
+/// Rows the log's layout has (a log written before a row existed lacks its columns).
+using HasRow = bool (*)(std::string_view name);
+
 template <typename Rows>
-void add_array_headers(std::vector<std::string>& h, const Rows& rows, std::size_t count) {
+void add_array_headers(std::vector<std::string>& h, const Rows& rows, std::size_t count,
+                       HasRow has) {
   for (std::size_t i = 0; i < count; ++i) {
-    for (const auto& row : rows) h.push_back(element_column(row.name, i));
+    for (const auto& row : rows) {
+      if (has(row.name)) h.push_back(element_column(row.name, i));
+    }
   }
 }
 
 template <typename Rows>
-void add_array_cells(CsvLine& line, const State& msg, const Rows& rows, std::size_t count) {
+void add_array_cells(CsvLine& line, const State& msg, const Rows& rows, std::size_t count,
+                     HasRow has) {
   for (std::size_t i = 0; i < count; ++i) {
-    for (const auto& row : rows) add_element(line, msg.*row.lcm, i);
+    for (const auto& row : rows) {
+      if (has(row.name)) add_element(line, msg.*row.lcm, i);
+    }
   }
 }
 
 template <typename Rows>
-void add_scalar_headers(std::vector<std::string>& h, const Rows& rows) {
-  for (const auto& row : rows) h.emplace_back(row.name);
+void add_scalar_headers(std::vector<std::string>& h, const Rows& rows, HasRow has) {
+  for (const auto& row : rows) {
+    if (has(row.name)) h.emplace_back(row.name);
+  }
 }
 
 template <typename Rows>
-void add_scalar_cells(CsvLine& line, const State& msg, const Rows& rows) {
-  for (const auto& row : rows) add_cell(line, msg.*row.lcm);
+void add_scalar_cells(CsvLine& line, const State& msg, const Rows& rows, HasRow has) {
+  for (const auto& row : rows) {
+    if (has(row.name)) add_cell(line, msg.*row.lcm);
+  }
 }
 
 /// Elements of a group in `msg`: the length of its first array.
@@ -75,25 +88,27 @@ std::size_t group_size(const State& msg, const Rows& rows) {
 
 class VehicleStateCsv final : public ChannelCsv {
  public:
-  [[nodiscard]] const char* type_name() const override { return "rig.vehicle_state_t"; }
+  explicit VehicleStateCsv(const VehicleStateLayout& layout) : layout_(layout) {}
+  [[nodiscard]] const char* type_name() const override { return layout_.type_name; }
 
   [[nodiscard]] std::string header() const override {
     std::vector<std::string> h{"timestamp_us", "sim_time_s", "monotonic_ns",  "cycle",
                                "lateness_ns",  "compute_ns", "deadline_miss", "num_units"};
-    add_array_headers(h, Fields::kUnit, units_);
+    const HasRow has = layout_.has_row;
+    add_array_headers(h, Fields::kUnit, units_, has);
     h.emplace_back("num_wheels");
     for (std::size_t i = 0; i < wheels_; ++i) h.push_back(element_column("wheel_unit", i));
-    add_array_headers(h, Fields::kWheel, wheels_);
-    add_array_headers(h, Fields::kWheelFlag, wheels_);
-    add_scalar_headers(h, Fields::kVehicle);
-    add_scalar_headers(h, Fields::kVehicleInt);
+    add_array_headers(h, Fields::kWheel, wheels_, has);
+    add_array_headers(h, Fields::kWheelFlag, wheels_, has);
+    add_scalar_headers(h, Fields::kVehicle, has);
+    add_scalar_headers(h, Fields::kVehicleInt, has);
     h.emplace_back("num_joints");
-    add_array_headers(h, Fields::kJoint, joints_);
+    add_array_headers(h, Fields::kJoint, joints_, has);
     return join_columns(h);
   }
 
   bool row(const Event& event, CsvLine& line) override {
-    if (msg_.decode(event.data, 0, static_cast<int>(event.size)) < 0) return false;
+    if (!layout_.decode(event, msg_)) return false;
     if (!sized_) {
       units_ = group_size(msg_, Fields::kUnit);
       wheels_ = group_size(msg_, Fields::kWheel);
@@ -106,19 +121,21 @@ class VehicleStateCsv final : public ChannelCsv {
                            std::int64_t{msg_.deadline_miss}, std::int64_t{msg_.num_units}}) {
       line.add(v);
     }
-    add_array_cells(line, msg_, Fields::kUnit, units_);
+    const HasRow has = layout_.has_row;
+    add_array_cells(line, msg_, Fields::kUnit, units_, has);
     line.add(std::int64_t{msg_.num_wheels});
     for (std::size_t i = 0; i < wheels_; ++i) add_element(line, msg_.wheel_unit, i);
-    add_array_cells(line, msg_, Fields::kWheel, wheels_);
-    add_array_cells(line, msg_, Fields::kWheelFlag, wheels_);
-    add_scalar_cells(line, msg_, Fields::kVehicle);
-    add_scalar_cells(line, msg_, Fields::kVehicleInt);
+    add_array_cells(line, msg_, Fields::kWheel, wheels_, has);
+    add_array_cells(line, msg_, Fields::kWheelFlag, wheels_, has);
+    add_scalar_cells(line, msg_, Fields::kVehicle, has);
+    add_scalar_cells(line, msg_, Fields::kVehicleInt, has);
     line.add(std::int64_t{msg_.num_joints});
-    add_array_cells(line, msg_, Fields::kJoint, joints_);
+    add_array_cells(line, msg_, Fields::kJoint, joints_, has);
     return true;
   }
 
  private:
+  const VehicleStateLayout& layout_;
   State msg_{};
   bool sized_ = false;
   std::size_t units_ = 0, wheels_ = 0, joints_ = 0;
@@ -126,6 +143,8 @@ class VehicleStateCsv final : public ChannelCsv {
 
 }  // namespace
 
-std::unique_ptr<ChannelCsv> make_vehicle_state_csv() { return std::make_unique<VehicleStateCsv>(); }
+std::unique_ptr<ChannelCsv> make_vehicle_state_csv(const VehicleStateLayout& layout) {
+  return std::make_unique<VehicleStateCsv>(layout);
+}
 
 }  // namespace rig::log2csv

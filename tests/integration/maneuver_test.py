@@ -27,8 +27,8 @@ from rig_checks import fail  # noqa: E402
 import rig_checks  # noqa: E402
 
 RIG, LOG2CSV, SRC, NAME = sys.argv[1:5]
-COLUMNS = ("sim_time_s", "unit0_", "unit1_", "wheel0_", "wheel1_", "steering_", "gear", "num_",
-           "joint0_", "rack_", "torsion_bar_", "tie_rod_")
+COLUMNS = ("sim_time_s", "unit0_", "unit1_", "wheel0_", "wheel1_", "wheel2_", "wheel3_", "wheel4_",
+           "wheel5_", "steering_", "gear", "num_", "joint0_", "rack_", "torsion_bar_", "tie_rod_")
 TMP = tempfile.mkdtemp(prefix=f"rig_maneuver_{NAME}_")
 # Configurations that run until stopped get a duration here.
 DURATION_S = {"bench": "5"}
@@ -134,12 +134,22 @@ def creep_mm(rows, t0, t1):
 
 
 def case_rig(s, rows):
-    # DLC at 60 km/h up the 10 % grade, then brakes at 10.5 s, stand-still, hold to 20 s.
+    # DLC at 60 km/h on the flat, onto the 10 % hill (config/roads/demo-hill.xodr), brakes at
+    # 12 s, stand-still on the hill, held to 20 s.
+    flat = [r for r in rows if r["sim_time_s"] < 10.0]
+    check(all(r[f"wheel{i}_road_z_m"] == 0.0 and r[f"wheel{i}_road_normal_z"] == 1.0
+              for r in flat for i in (0, 1)), "the lane change (t < 10 s) is driven on the flat")
     check_dlc([r for r in rows if r["sim_time_s"] < 10.5], 40.0, 16.67)
-    stop = next(r["sim_time_s"] for r in rows if r["sim_time_s"] > 10.5 and speed(r) < 0.01)
-    check(stop < 15.0, f"stand-still at t = {stop:.2f} s (< 15 s)")
-    creep = creep_mm(rows, 15.0, 20.0)
-    check(creep < 1.0, f"creep on the 10 % grade over 15-20 s: {creep:.3f} mm (< 1 mm)")
+    stop = next(r["sim_time_s"] for r in rows if r["sim_time_s"] > 12.0 and speed(r) < 0.01)
+    check(stop < 15.5, f"stand-still at t = {stop:.2f} s (< 15.5 s)")
+    end = rows[-1]
+    grade = -end["wheel0_road_normal_x"] / end["wheel0_road_normal_z"]
+    check(abs(grade - 0.10) < 1e-6 and end["unit0_x_m"] > 200.0,
+          f"parked on the 10 % hill: x = {end['unit0_x_m']:.1f} m, grade under the wheels {grade:.4f}")
+    check(abs(end["unit0_pitch_rad"] + math.atan(0.10)) < 0.02,
+          f"pitched up the hill: {end['unit0_pitch_rad']:.4f} rad (atan 0.1 = 0.0997)")
+    creep = creep_mm(rows, 16.0, 20.0)
+    check(creep < 1.0, f"creep on the 10 % grade over 16-20 s: {creep:.3f} mm (< 1 mm)")
     check(all(r["wheel0_brake_torque_nm"] != 0 for r in rows if r["sim_time_s"] > 15),
           "brakes hold the car")
 
@@ -435,6 +445,136 @@ def case_combination_car_towbar_car(s, rows):
     towing = [r["joint0_rod_force_n"] for r in rows if r["sim_time_s"] < 1.0]
     check(min(r["joint0_rod_force_n"] for r in rows) < -1000.0, "rod in compression while braking")
     check(max(towing) > 50.0, f"rod in tension while towing ({max(towing):.0f} N)")
+
+
+# ---- issue 16: real roads (config/maneuvers/*: Belgian block, sine, ISO 8608, cleat, mu jumps)
+
+
+def rms(values):
+    return math.sqrt(sum(v * v for v in values) / len(values))
+
+
+def correlation(a, b):
+    ma, mb = sum(a) / len(a), sum(b) / len(b)
+    cov = sum((x - ma) * (y - mb) for x, y in zip(a, b))
+    return cov / math.sqrt(sum((x - ma) ** 2 for x in a) * sum((y - mb) ** 2 for y in b))
+
+
+def wheels(rows):
+    return int(rows[0]["num_wheels"])
+
+
+def check_ride(rows, x_from, x_to, az_band, v_target):
+    """On the rough stretch x_from..x_to of the CG: speed held, the body's vertical acceleration
+    rms within az_band, the share of wheel-steps lifted off printed; the road seen under wheel 0."""
+    on = [r for r in rows if x_from <= r["unit0_x_m"] <= x_to]
+    check(len(on) > 500, f"{len(on)} steps on the rough stretch")
+    v = [speed(r) for r in on]
+    check(min(v) > 0.9 * v_target and max(v) < 1.1 * v_target,
+          f"speed {min(v) * 3.6:.1f}-{max(v) * 3.6:.1f} km/h within 10 % of {v_target * 3.6:.0f}")
+    az = rms([r["unit0_az_mps2"] for r in on])
+    check(az_band[0] < az < az_band[1], f"body a_z rms {az:.3f} m/s^2 in {az_band}")
+    n = wheels(rows)
+    lifted = sum(1 for r in on for i in range(n) if r[f"wheel{i}_load_n"] <= 0) / (n * len(on))
+    print(f"a wheel lifted off {100 * lifted:.2f} % of the wheel-steps on the stretch")
+    z = [r["wheel0_road_z_m"] for r in on]
+    check(max(z) - min(z) > 0.05, f"road under wheel 0 from {min(z):.4f} to {max(z):.4f} m")
+    return az
+
+
+def case_belgian_block_30kmh_sedan(s, rows):
+    # the block from x = 5 to 15 m; CG from the front wheels' entry (1.2 m ahead) to the rear's
+    # exit (1.6 m behind); tests/model/vehicle/road_ride_test.cpp: 2.46 m/s^2 at 30 km/h
+    check_ride(rows, 3.8, 16.6, (1.5, 3.5), 8.333)
+
+
+def case_belgian_block_30kmh_truck(s, rows):
+    # axles 3.23 m ahead of and 1.95 m behind the CG; a 27 t truck shakes less than the sedan
+    check_ride(rows, 1.8, 17.0, (0.5, 2.5), 8.333)
+
+
+def case_sine_wave_road(s, rows):
+    # 10 waves of 8 m from x = 10 m, 30 mm peak to peak: the road under the front-left wheel (its
+    # static contact point ~1.2 m ahead of the CG) is the closed form within 0.5 mm
+    worst = 0.0
+    for r in rows:
+        u = r["unit0_x_m"] + 1.2 - 10.0
+        z = 0.015 * (1 - math.cos(2 * math.pi * u / 8.0)) if 0 <= u <= 80 else 0.0
+        worst = max(worst, abs(r["wheel0_road_z_m"] - z))
+    check(worst < 5e-4, f"road under wheel 0 = 0.015 (1 - cos(2 pi u / 8)) within {worst * 1e3:.3f} mm")
+    on = [r for r in rows if 2.0 <= r["sim_time_s"] <= 5.0]
+    heave = max(r["unit0_z_m"] for r in on) - min(r["unit0_z_m"] for r in on)
+    pitch = max(r["unit0_pitch_rad"] for r in on) - min(r["unit0_pitch_rad"] for r in on)
+    check(0.010 < heave < 0.045, f"body heave {heave * 1e3:.1f} mm peak to peak (road 30 mm)")
+    check(0.005 < pitch < 0.06, f"body pitch {pitch:.4f} rad peak to peak")
+    v = [speed(r) for r in rows]
+    check(min(v) > 0.95 * 13.89, f"speed held ({min(v) * 3.6:.1f} km/h at least)")
+
+
+def case_iso8608_class_c_80kmh(s, rows):
+    on = [r for r in rows if r["sim_time_s"] >= 1.0]
+    v = [speed(r) for r in on]
+    check(min(v) > 0.95 * 22.22 and max(v) < 1.05 * 22.22,
+          f"speed {min(v) * 3.6:.1f}-{max(v) * 3.6:.1f} km/h within 5 % of 80")
+    left, right = [r["wheel0_road_z_m"] for r in on], [r["wheel1_road_z_m"] for r in on]
+    mean = sum(left) / len(left)
+    std = math.sqrt(sum((z - mean) ** 2 for z in left) / len(left))
+    # class C over 0.011 cycles/m .. Nyquist: sqrt(integral G_d(n0) (n/n0)^-2 dn) ~ 15 mm on the
+    # ~440 m driven (the longest waves are few)
+    check(0.008 < std < 0.035, f"road under wheel 0: std {std * 1e3:.1f} mm (class C)")
+    c = correlation(left, right)
+    check(0.5 < c < 0.98, f"left and right tracks correlated but not equal ({c:.3f}): roll input")
+    lag = round(2.8 / 22.22 / 0.001)  # the rear wheel follows the front one by wheelbase / v
+    front, rear = [r["wheel0_road_z_m"] for r in rows], [r["wheel2_road_z_m"] for r in rows]
+    c_fr = correlation(front[1000:-lag], rear[1000 + lag:])
+    check(c_fr > 0.99, f"the rear wheel rolls over the front one's track ({c_fr:.5f})")
+    az = rms([r["unit0_az_mps2"] for r in on])
+    check(0.4 < az < 2.5, f"body a_z rms {az:.3f} m/s^2")
+    roll = rms([r["unit0_wx_radps"] for r in on])
+    check(roll > 0.01, f"roll rate rms {roll:.4f} rad/s (the tracks differ)")
+
+
+def case_cleat_20mm(s, rows):
+    static = rows[0]["wheel0_load_n"]
+    peak = max(r["wheel0_load_n"] for r in rows)
+    above = sum(1 for r in rows if r["wheel0_load_n"] > 1.2 * static)
+    check(1.5 * static < peak < 4 * static,
+          f"front-left F_z peak {peak:.0f} N over the static {static:.0f} N "
+          "(road_ride_test: 8.8 kN at 40 km/h)")
+    check(above >= 3, f"a force history, not a spike: {above} ms above 1.2 x static")
+    road = max(r["wheel0_road_z_m"] for r in rows)
+    check(0.009 < road <= 0.0201, f"the road under wheel 0 rises to {road * 1e3:.1f} mm (the "
+          "probes' mean: 10 mm with both side probes on the 20 mm cleat)")
+    check(min(speed(r) for r in rows) > 0.95 * 11.11, "speed held over the cleat")
+
+
+def case_mu_jump_braking(s, rows):
+    # dry until the front wheels reach x = 20 m (x_cg 18.8 m), wet (0.3) after
+    dry = [r for r in rows if 0.9 <= r["sim_time_s"] and r["unit0_x_m"] < 18.0]
+    wet = [r for r in rows if r["unit0_x_m"] > 22.0 and speed(r) > 1.0]
+    check(all(r["wheel0_road_mu"] == 1.0 for r in dry) and all(
+        r["wheel0_road_mu"] == 0.3 and r["wheel2_road_mu"] == 0.3 for r in wet),
+        "wheel_road_mu 1 on the dry part, 0.3 on the wet")
+    ax_dry = sum(r["unit0_ax_mps2"] for r in dry) / len(dry)
+    ax_wet = sum(r["unit0_ax_mps2"] for r in wet) / len(wet)
+    check(ax_dry < -5.0, f"braking on the dry road {ax_dry:.2f} m/s^2")
+    # locked on the wet road: the sliding force; the sedan's F_S / F_z at mu 1 is ~1.1-1.2
+    check(-0.3 * 9.81 * 1.4 < ax_wet < -0.3 * 9.81 * 0.8,
+          f"sliding on the wet road {ax_wet:.2f} m/s^2 (0.3 g x the tires' sliding ratio)")
+    check(all(r["wheel0_spin_radps"] == 0.0 for r in wet), "the front wheels lock on the low mu")
+    check(speed(rows[-1]) < 0.01 and abs(rows[-1]["unit0_y_m"]) < 0.1, "stops on the x axis")
+
+
+def case_mu_split_braking(s, rows):
+    r1 = at(rows, 1.0)
+    check(r1["wheel0_road_mu"] == 1.0 and r1["wheel1_road_mu"] == 0.3,
+          "left wheels on mu 1, right wheels on 0.3")
+    end = rows[-1]
+    check(speed(end) < 0.01, "stand-still")
+    check(end["unit0_yaw_rad"] > 0.03,
+          f"yawed to the high-mu (left) side: {end['unit0_yaw_rad']:.4f} rad")
+    held = max(abs(r["steering_wheel_angle_rad"]) for r in rows)
+    check(held < 0.01, f"the wheel held straight by the robot (within {held:.4f} rad)")
 
 
 summary, states = run_offline(config_path(NAME))

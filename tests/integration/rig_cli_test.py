@@ -200,8 +200,9 @@ def case_usage():
 # The kind every file under config/ must check as, by folder (and extension in config/can/). A new
 # folder fails here until its kind is registered in rig/check.cpp and named here.
 KIND_OF_FOLDER = {"": "run-config", "maneuvers": "run-config", "combinations": "combination",
-                  "vehicles": "vehicle", "can/.toml": "can-mapping", "can/.dbc": "dbc"}
-KINDS = ["run-config", "combination", "vehicle", "can-mapping", "dbc"]
+                  "vehicles": "vehicle", "can/.toml": "can-mapping", "can/.dbc": "dbc",
+                  "roads/.xodr": "opendrive", "roads/.crg": "crg"}
+KINDS = ["run-config", "combination", "vehicle", "can-mapping", "dbc", "crg", "opendrive"]
 
 
 def config_files():

@@ -413,7 +413,9 @@ TEST(Config, DefaultConfigIsTheSedanDemoWithThePathDriver) {
   ASSERT_EQ(c.model.kind, "vehicle");
   ASSERT_TRUE(c.model.vehicle.has_value());
   EXPECT_EQ(c.model.vehicle->params.axles.size(), 2u);
-  EXPECT_DOUBLE_EQ(c.model.vehicle->params.road.grade, 0.10);
+  // the road (issue 16): config/roads/demo-hill.xodr, a surface; gravity straight down
+  EXPECT_DOUBLE_EQ(c.model.vehicle->params.road.grade, 0.0);
+  EXPECT_TRUE(c.model.vehicle->params.road.surface != nullptr);
   ASSERT_TRUE(c.path_driver.has_value());
   EXPECT_FALSE(c.driver.has_value());
   // pure-pursuit geometry from the sedan: wheelbase 1.20 + 1.60 m, ratio 0.13 m / 0.008125 m/rad
@@ -423,7 +425,7 @@ TEST(Config, DefaultConfigIsTheSedanDemoWithThePathDriver) {
                          Signal::kBrakePressureFront, Signal::kBrakePressureRear})
     EXPECT_EQ(c.routing.source[model::index(s)], model::SignalSource::kDriver)
         << model::info(s).name;
-  // the stop phase: no throttle, pressures ramped over 0.5 s from 10.5 s and held
+  // the stop phase on the hill: no throttle, 40/20 bar ramped over 0.5 s from 12 s and held
   auto d = make_driver(c);
   ASSERT_NE(d, nullptr);
   model::Signals s;
@@ -431,12 +433,12 @@ TEST(Config, DefaultConfigIsTheSedanDemoWithThePathDriver) {
   d->update(1.0, s);
   EXPECT_GT(s[Signal::kThrottlePedal], 0.5);
   EXPECT_DOUBLE_EQ(s[Signal::kBrakePressureFront], 0.0);
-  d->update(10.75, s);
+  d->update(12.25, s);
   EXPECT_DOUBLE_EQ(s[Signal::kThrottlePedal], 0.0);
-  EXPECT_NEAR(s[Signal::kBrakePressureFront], 1.5e6, 1e-6);
-  EXPECT_NEAR(s[Signal::kBrakePressureRear], 0.75e6, 1e-6);
+  EXPECT_NEAR(s[Signal::kBrakePressureFront], 2.0e6, 1e-6);
+  EXPECT_NEAR(s[Signal::kBrakePressureRear], 1.0e6, 1e-6);
   d->update(19.0, s);
-  EXPECT_DOUBLE_EQ(s[Signal::kBrakePressureFront], 3.0e6);
+  EXPECT_DOUBLE_EQ(s[Signal::kBrakePressureFront], 4.0e6);
 }
 
 // ---- Zero allocation on the loop thread ----

@@ -5,7 +5,11 @@
 #include <benchmark/benchmark.h>
 
 #include "io/config/vehicle_file.h"
+#include "model/road/crg_surface.h"
 #include "model/vehicle/vehicle_model.h"
+#ifdef RIG_BELGIAN_BLOCK
+#include "io/config/crg_file.h"
+#endif
 #include "tests/support/bench_inputs.h"
 
 namespace {
@@ -55,6 +59,47 @@ void BM_Sedan20sOffline(benchmark::State& state) {
     }
   }
 }
+
+/// The road's cost (issue 16): the sedan straight at 5 m/s, on the plane or over a surface. The
+/// Belgian block is 10 m long, so every 1000 steps the car is put back at its start (untimed):
+/// the same 1200 steps as scripts/step-instructions' callgrind count, again and again.
+void road_bench(benchmark::State& state, std::shared_ptr<const rig::model::road::Surface> road) {
+  using rig::test::kRoadBenchSteps;
+  using rig::test::kRoadBenchWarmSteps;
+  rig::model::vehicle::VehicleParams p =
+      rig::io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/sedan.toml");
+  p.road.surface = std::move(road);
+  rig::model::vehicle::VehicleModel m(p, 1e-3);
+  Signals s = rig::test::straight_inputs();
+  int left = 0;
+  for (auto _ : state) {
+    if (left == 0) {
+      state.PauseTiming();
+      m.reset(0, 0, 0);
+      m.set_forward_speed(rig::test::kRoadBenchSpeedMps);
+      for (int k = 0; k < kRoadBenchWarmSteps; ++k) (void)m.step(s);
+      left = kRoadBenchSteps;
+      state.ResumeTiming();
+    }
+    benchmark::DoNotOptimize(m.step(s));
+    --left;
+  }
+}
+
+void BM_SedanStepStraightPlane(benchmark::State& state) { road_bench(state, nullptr); }
+BENCHMARK(BM_SedanStepStraightPlane);
+
+#ifdef RIG_BELGIAN_BLOCK
+/// Over ASAM's Belgian block (OpenCRG, 1 cm grid): at most 1.4x the plane (issue 16).
+void BM_SedanStepStraightBelgianBlock(benchmark::State& state) {
+  rig::model::road::Placement at;
+  at.given = true;
+  at.x_m = rig::test::kRoadBenchBlockX;
+  road_bench(state, std::make_shared<rig::model::road::CrgSurface>(
+                        rig::io::config::load_crg_file(RIG_BELGIAN_BLOCK), at));
+}
+BENCHMARK(BM_SedanStepStraightBelgianBlock);
+#endif
 
 BENCHMARK(BM_SedanStep);
 BENCHMARK(BM_SedanStepEnhancedSteering);

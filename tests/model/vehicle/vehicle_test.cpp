@@ -486,7 +486,9 @@ TEST(VehicleConfig, ManeuverFilesNameTheirVehicleAndRunAtOneMillisecond) {
     run(m, s, 0.2, nullptr);
     EXPECT_NEAR(s[Signal::kVehicleSpeed], settings.initial_speed_mps, 0.5) << entry.path();
   }
-  EXPECT_EQ(files, 9);  // + weave, parking effort (0 and 5 km/h), returnability (issue 15)
+  // + weave, parking effort (0 and 5 km/h), returnability (issue 15); + the Belgian block (sedan,
+  // truck), sine-wave road, ISO 8608 class C, cleat, mu-jump and mu-split braking (issue 16)
+  EXPECT_EQ(files, 16);
 }
 
 TEST(Vehicle, TruckStepSteerSettlesAtOneAndTwoMilliseconds) {

@@ -1,0 +1,120 @@
+#include "rig/log2csv/legacy_vehicle_state.h"
+
+#include "rig/vehicle_state_v1_t.hpp"
+
+namespace rig::log2csv {
+
+namespace {
+
+using State = rig::vehicle_state_t;
+using V1 = rig::vehicle_state_v1_t;
+
+bool decode_current(const Event& event, State& msg) {
+  return msg.decode(event.data, 0, static_cast<int>(event.size)) >= 0;
+}
+
+bool has_every_row(std::string_view /*name*/) { return true; }
+
+// ---- v1: before the per-wheel road fields (issue 16) ----
+
+void copy_frame_and_units(const V1& a, State& b) {
+  b.sim_time_s = a.sim_time_s;
+  b.monotonic_ns = a.monotonic_ns;
+  b.cycle = a.cycle;
+  b.lateness_ns = a.lateness_ns;
+  b.compute_ns = a.compute_ns;
+  b.deadline_miss = a.deadline_miss;
+  b.num_units = a.num_units;
+  b.unit_x_m = a.unit_x_m;
+  b.unit_y_m = a.unit_y_m;
+  b.unit_z_m = a.unit_z_m;
+  b.unit_roll_rad = a.unit_roll_rad;
+  b.unit_pitch_rad = a.unit_pitch_rad;
+  b.unit_yaw_rad = a.unit_yaw_rad;
+  b.unit_vx_mps = a.unit_vx_mps;
+  b.unit_vy_mps = a.unit_vy_mps;
+  b.unit_vz_mps = a.unit_vz_mps;
+  b.unit_wx_radps = a.unit_wx_radps;
+  b.unit_wy_radps = a.unit_wy_radps;
+  b.unit_wz_radps = a.unit_wz_radps;
+  b.unit_ax_mps2 = a.unit_ax_mps2;
+  b.unit_ay_mps2 = a.unit_ay_mps2;
+  b.unit_az_mps2 = a.unit_az_mps2;
+}
+
+void copy_wheels(const V1& a, State& b) {
+  b.num_wheels = a.num_wheels;
+  b.wheel_unit = a.wheel_unit;
+  b.wheel_spin_radps = a.wheel_spin_radps;
+  b.wheel_slip_x = a.wheel_slip_x;
+  b.wheel_slip_y = a.wheel_slip_y;
+  b.wheel_force_x_n = a.wheel_force_x_n;
+  b.wheel_force_y_n = a.wheel_force_y_n;
+  b.wheel_load_n = a.wheel_load_n;
+  b.wheel_x_e_m = a.wheel_x_e_m;
+  b.wheel_y_e_m = a.wheel_y_e_m;
+  b.wheel_steer_rad = a.wheel_steer_rad;
+  b.wheel_brake_torque_nm = a.wheel_brake_torque_nm;
+  b.wheel_brake_pressure_pa = a.wheel_brake_pressure_pa;
+  b.wheel_drive_torque_nm = a.wheel_drive_torque_nm;
+  b.wheel_hub_travel_m = a.wheel_hub_travel_m;
+  b.wheel_long_speed_mps = a.wheel_long_speed_mps;
+  b.wheel_lat_speed_mps = a.wheel_lat_speed_mps;
+  b.wheel_rolling_radius_m = a.wheel_rolling_radius_m;
+  b.wheel_tire_load_n = a.wheel_tire_load_n;
+  b.wheel_slip_valid = a.wheel_slip_valid;
+}
+
+void copy_vehicle_and_joints(const V1& a, State& b) {
+  b.steering_wheel_angle_rad = a.steering_wheel_angle_rad;
+  b.steering_wheel_speed_radps = a.steering_wheel_speed_radps;
+  b.steering_wheel_torque_nm = a.steering_wheel_torque_nm;
+  b.torsion_bar_torque_nm = a.torsion_bar_torque_nm;
+  b.rack_travel_m = a.rack_travel_m;
+  b.rack_force_n = a.rack_force_n;
+  b.assist_torque_nm = a.assist_torque_nm;
+  b.tie_rod_force_left_n = a.tie_rod_force_left_n;
+  b.tie_rod_force_right_n = a.tie_rod_force_right_n;
+  b.engine_speed_radps = a.engine_speed_radps;
+  b.engine_torque_nm = a.engine_torque_nm;
+  b.gear = a.gear;
+  b.brake_pressure_fl_pa = a.brake_pressure_fl_pa;
+  b.brake_pressure_fr_pa = a.brake_pressure_fr_pa;
+  b.brake_pressure_rl_pa = a.brake_pressure_rl_pa;
+  b.brake_pressure_rr_pa = a.brake_pressure_rr_pa;
+  b.model_valid = a.model_valid;
+  b.model_fault_kind = a.model_fault_kind;
+  b.model_fault_unit = a.model_fault_unit;
+  b.num_joints = a.num_joints;
+  b.joint_force_x_n = a.joint_force_x_n;
+  b.joint_force_y_n = a.joint_force_y_n;
+  b.joint_force_z_n = a.joint_force_z_n;
+  b.joint_violation_m = a.joint_violation_m;
+  b.joint_rod_force_n = a.joint_rod_force_n;
+}
+
+bool decode_v1(const Event& event, State& msg) {
+  V1 v1;
+  if (v1.decode(event.data, 0, static_cast<int>(event.size)) < 0) return false;
+  copy_frame_and_units(v1, msg);
+  copy_wheels(v1, msg);
+  copy_vehicle_and_joints(v1, msg);
+  return true;
+}
+
+bool v1_has_row(std::string_view name) { return !name.starts_with("wheel_road_"); }
+
+constexpr VehicleStateLayout kCurrent{"rig.vehicle_state_t", decode_current, has_every_row};
+constexpr VehicleStateLayout kV1{"rig.vehicle_state_t (v1: before the wheel_road_ fields)",
+                                 decode_v1, v1_has_row};
+
+}  // namespace
+
+const VehicleStateLayout& current_vehicle_state_layout() { return kCurrent; }
+
+const VehicleStateLayout* legacy_vehicle_state_layout(std::int64_t hash) {
+  if (hash == V1::getHash()) return &kV1;
+  return nullptr;
+}
+
+}  // namespace rig::log2csv

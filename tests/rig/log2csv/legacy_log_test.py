@@ -1,0 +1,50 @@
+#!/usr/bin/python3
+"""rig-log2csv reads LCM logs written before rig.vehicle_state_t gained the per-wheel road fields
+(issue 16: wheel_road_z_m, wheel_road_normal_x/y/z, wheel_road_mu).
+
+usage: legacy_log_test.py RIG_LOG2CSV
+
+v1/*.lcm were written by main's `rig run` at 8f435e5 (the sedan's ISO 7401 step steer and the
+car + trailer, 20 cycles each, --offline), v1/*.RIG_STATE.csv by main's rig-log2csv from them.
+Today's rig-log2csv must give the same RIG_STATE.csv byte for byte (the columns the log has, the
+same values: a field the legacy decoder forgot to carry over would read 0) and name the layout.
+"""
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+LOG2CSV = sys.argv[1]
+HERE = pathlib.Path(__file__).resolve().parent / "v1"
+failures = 0
+for log in sorted(HERE.glob("*.lcm")):
+    with tempfile.TemporaryDirectory() as out:
+        r = subprocess.run([LOG2CSV, str(log), out], capture_output=True, text=True)
+        if r.returncode != 0:
+            print(f"FAIL {log.name}: exit {r.returncode}: {r.stderr}")
+            failures += 1
+            continue
+        state = [line for line in r.stdout.splitlines() if "RIG_STATE.csv" in line]
+        if not state or "v1" not in state[0] or "20 rows" not in state[0]:
+            print(f"FAIL {log.name}: rig-log2csv says {state}")
+            failures += 1
+        got = (pathlib.Path(out) / "RIG_STATE.csv").read_bytes()
+        want = (HERE / f"{log.stem}.RIG_STATE.csv").read_bytes()
+        if got != want:
+            g, w = got.decode().splitlines(), want.decode().splitlines()
+            print(f"FAIL {log.name}: RIG_STATE.csv differs from main's rig-log2csv "
+                  f"({len(g)} vs {len(w)} lines; headers equal: {g[0] == w[0]})")
+            if g[0] == w[0]:
+                head = w[0].split(",")
+                for gl, wl in zip(g[1:], w[1:]):
+                    bad = [h for h, a, b in zip(head, gl.split(","), wl.split(",")) if a != b]
+                    if bad:
+                        print(f"  first differing row, columns: {bad[:10]}")
+                        break
+            failures += 1
+        else:
+            print(f"ok {log.name}: {len(want.splitlines())} lines identical to main's CSV; {state[0]}")
+        if b"wheel0_road_" in got:
+            print(f"FAIL {log.name}: the CSV of a v1 log has road columns the log does not carry")
+            failures += 1
+sys.exit(1 if failures else 0)
