@@ -9,8 +9,9 @@ rig_lcm/udpm.py), the messages decoded by the generated classes (rig_lcm/types.p
 to rows as rig-log2csv does (rig_lcm/rows.py).
 """
 from .logfile import Event, read_events, read_log
+from .names import wheel_names
 from .types import decode, type_of
 from .udpm import DEFAULT_URL, Datagrams, subscribe
 
 __all__ = ["DEFAULT_URL", "Datagrams", "Event", "decode", "read_events", "read_log",
-           "subscribe", "type_of"]
+           "subscribe", "type_of", "wheel_names"]
