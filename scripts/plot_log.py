@@ -1,12 +1,20 @@
 #!/usr/bin/python3
-"""Figures of a rig run from the CSVs of rig-log2csv (called as `scripts/plot log CSVDIR [OUTDIR]`).
+"""Figures of a rig run from the CSVs of rig-log2csv:
+
+    scripts/plot log CSVDIR [OUTDIR] [--config FILE] [--summary FILE]
 
 Reads CSVDIR/*RIG_STATE.csv (any channel prefix), *RIG_STATUS.csv and *RIG_SIGNALS.csv, writes
-PNGs to OUTDIR (default CSVDIR) and prints the path of each:
-  trajectory.png    CG path of every unit in the road frame
-  speed_accel.png   speed and body accelerations of the first unit
-  steering.png      steering wheel angle; hand, torsion bar and assist torques
-  wheel_slips.png   longitudinal and lateral slip of every wheel
+PNGs to OUTDIR (default CSVDIR) and prints the path of each. Titles name the configuration
+(--config: the run configuration; its path driver on the ISO 3888-1 track draws the lanes) and
+the maneuver's KPIs (--summary: rig run's --summary-json, its `kpis`). plot_story.py:
+  trajectory.png    CG path of every unit; the ISO 3888-1 lanes and cones; the brake point
+  speed_accel.png   signed v_x of every unit; a_x, a_y
+  wheel_slips.png   slips of every wheel by name (FL, FR, ...), stand-still masked
+  dynamics.png      yaw rate, sideslip, roll of every unit
+  wheel_loads.png   wheel loads by name, per unit
+  combination.png   (several units) articulation and joint forces
+here:
+  steering.png      steering wheel angle; hand, torsion bar and assist torques; rack force
   road.png          the road under every wheel along the distance travelled: its height (what
                     each wheel rolled over; the front wheels' traces lead the rear ones' by the
                     wheelbase), its slopes along x and y from the normal, its friction scale mu
@@ -14,6 +22,7 @@ PNGs to OUTDIR (default CSVDIR) and prints the path of each:
   lateness.png      histogram of loop lateness with the deadline (one period) marked
   misses.png        timeline of deadline misses
 """
+import argparse
 import csv
 import math
 import pathlib
@@ -23,6 +32,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+from plot_story import Run, plot_story  # noqa: E402
 
 
 def find(csv_dir, channel):
@@ -68,34 +79,9 @@ def save(fig, out_dir, name, written):
     written.append(path)
 
 
-def plot_state(state, out_dir, written):
+def plot_steering(state, run, out_dir, written):
     t = state["sim_time_s"]
-    fig, ax = plt.subplots(figsize=(7, 6))
-    for u in indices(state, "unit", "_x_m"):
-        ax.plot(state[f"unit{u}_x_m"], state[f"unit{u}_y_m"], label=f"unit {u}")
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
-    ax.set_title("Trajectory (CG, road frame)")
-    ax.axis("equal")
-    ax.grid(True)
-    ax.legend()
-    save(fig, out_dir, "trajectory.png", written)
-
-    fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8, 6))
-    speed = [math.hypot(vx, vy) for vx, vy in zip(state["unit0_vx_mps"], state["unit0_vy_mps"])]
-    ax1.plot(t, speed)
-    ax1.set_ylabel("speed [m/s]")
-    ax1.set_title("Speed and accelerations (unit 0, body axes)")
-    ax1.grid(True)
-    ax2.plot(t, state["unit0_ax_mps2"], label="a_x longitudinal")
-    ax2.plot(t, state["unit0_ay_mps2"], label="a_y lateral")
-    ax2.set_xlabel("simulated time [s]")
-    ax2.set_ylabel("acceleration [m/s²]")
-    ax2.grid(True)
-    ax2.legend()
-    save(fig, out_dir, "speed_accel.png", written)
-
-    fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8, 6))
+    fig, (ax1, ax2, ax3) = plt.subplots(3, 1, sharex=True, figsize=(8, 8))
     ax1.plot(t, [math.degrees(a) for a in state["steering_wheel_angle_rad"]])
     ax1.set_ylabel("steering wheel angle [deg]")
     ax1.set_title("Steering")
@@ -104,25 +90,16 @@ def plot_state(state, out_dir, written):
                           ("torsion_bar_torque_nm", "torsion bar torque"),
                           ("assist_torque_nm", "assist torque")):
         ax2.plot(t, state[column], label=label)
-    ax2.set_xlabel("simulated time [s]")
     ax2.set_ylabel("torque [N m]")
     ax2.grid(True)
     ax2.legend()
+    ax3.plot(t, [f / 1e3 for f in state["rack_force_n"]])
+    ax3.set_ylabel("rack force [kN]")
+    ax3.set_xlabel("simulated time [s]")
+    ax3.grid(True)
+    fig.suptitle(run.title(), fontsize=9)
     save(fig, out_dir, "steering.png", written)
 
-    fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8, 6))
-    for w in indices(state, "wheel", "_slip_x"):
-        unit = int(state[f"wheel{w}_unit"][0]) if f"wheel{w}_unit" in state else 0
-        ax1.plot(t, state[f"wheel{w}_slip_x"], label=f"wheel {w} (unit {unit})")
-        ax2.plot(t, state[f"wheel{w}_slip_y"], label=f"wheel {w} (unit {unit})")
-    ax1.set_ylabel("longitudinal slip [-]")
-    ax1.set_title("Wheel slips")
-    ax1.grid(True)
-    ax1.legend(fontsize="small", ncol=2)
-    ax2.set_ylabel("lateral slip [-]")
-    ax2.set_xlabel("simulated time [s]")
-    ax2.grid(True)
-    save(fig, out_dir, "wheel_slips.png", written)
 
 
 def travelled_m(state):
@@ -210,11 +187,19 @@ def plot_timing(state, status, out_dir, written):
 
 
 def main(argv):
-    if len(argv) not in (2, 3):
-        print("usage: scripts/plot log CSVDIR [OUTDIR]", file=sys.stderr)
+    parser = argparse.ArgumentParser(prog="scripts/plot log")
+    parser.add_argument("csv_dir", metavar="CSVDIR")
+    parser.add_argument("out_dir", metavar="OUTDIR", nargs="?")
+    parser.add_argument("--config", help="the run configuration (title, ISO 3888-1 track)")
+    parser.add_argument("--summary", help="rig run's --summary-json (the KPIs in the titles)")
+    args = parser.parse_args(argv[1:])
+    csv_dir = pathlib.Path(args.csv_dir)
+    out_dir = pathlib.Path(args.out_dir) if args.out_dir else csv_dir
+    try:
+        run = Run(args.config, args.summary)
+    except (OSError, ValueError) as error:  # tomllib's and json's errors are ValueErrors
+        print(f"plot log: {error}", file=sys.stderr)
         return 2
-    csv_dir = pathlib.Path(argv[1])
-    out_dir = pathlib.Path(argv[2]) if len(argv) == 3 else csv_dir
     out_dir.mkdir(parents=True, exist_ok=True)
     state_csv = find(csv_dir, "RIG_STATE")
     if state_csv is None:
@@ -227,7 +212,8 @@ def main(argv):
     status_csv = find(csv_dir, "RIG_STATUS")
     status = read_columns(status_csv) if status_csv else None
     written = []
-    plot_state(state, out_dir, written)
+    plot_story(state, run, out_dir, written)
+    plot_steering(state, run, out_dir, written)
     plot_road(state, out_dir, written)
     plot_timing(state, status, out_dir, written)
     for path in written:
