@@ -81,16 +81,16 @@ RigSettings read_rig(io::config::StrictTable& t) {
   return s;
 }
 
-ModelSettings read_model(io::config::StrictTable& t) {
+ModelSettings read_model(io::config::StrictTable& t, const io::config::Overrides& overrides) {
   ModelSettings m;
   m.kind = t.choice("kind", "quarter-car", {"quarter-car", "vehicle", "combination"});
   if (m.kind == "vehicle") {  // vehicle file + road keys (rig/vehicle_config)
-    m.vehicle = io::config::read_vehicle_model(t);
+    m.vehicle = io::config::read_vehicle_model(t, overrides.of_file(1));
     t.finish();
     return m;
   }
   if (m.kind == "combination") {  // units, joints, road keys (rig/vehicle_config)
-    m.combination = io::config::read_combination_model(t);
+    m.combination = io::config::read_combination_model(t, &overrides);
     t.finish();
     return m;
   }
@@ -161,6 +161,14 @@ void locate_can_routes(const io::config::StrictTable& routing, const RoutingRequ
   }
 }
 
+/// The units whose vehicle files a --set may name: 1 for a vehicle, the combination's count.
+void check_override_files(const io::config::Overrides& overrides, const ModelSettings& m) {
+  const int units = m.vehicle       ? 1
+                    : m.combination ? static_cast<int>(m.combination->units.size())
+                                    : 0;
+  overrides.check_files(units, m.combination.has_value());
+}
+
 }  // namespace
 
 io::signals::ModelShape model_shape(const ModelSettings& model) {
@@ -177,13 +185,15 @@ io::signals::ModelShape model_shape(const ModelSettings& model) {
   return shape;
 }
 
-RigConfig load_config(const std::filesystem::path& file) {
-  const toml::table doc = io::config::load_toml_file(file);
+RigConfig load_config(const std::filesystem::path& file, const io::config::Overrides& overrides) {
+  toml::table doc = io::config::load_toml_file(file);
+  io::config::apply_overrides(overrides.of_file(0), doc, file);
   io::config::StrictTable top(doc, file, "top level");
   RigConfig c;
   c.file = file;
   if (auto t = top.optional_table("rig")) c.rig = read_rig(*t);
-  if (auto t = top.optional_table("model")) c.model = read_model(*t);
+  if (auto t = top.optional_table("model")) c.model = read_model(*t, overrides);
+  check_override_files(overrides, c.model);
   c.catalogue = std::make_shared<const io::signals::Catalogue>(model_shape(c.model));
   // Routing before the driver: a table column must not be routed to CAN.
   RoutingRequests requests{};

@@ -12,6 +12,7 @@
 
 #include "io/can/bridge/can_settings.h"
 #include "io/config/combination_file.h"
+#include "io/config/overrides.h"
 #include "io/config/vehicle_file.h"
 #include "io/lcm/lcm_settings.h"
 #include "io/signals/catalogue.h"
@@ -80,7 +81,10 @@ struct RigConfig {
 /// or the quarter car's one unit of one axle.
 io::signals::ModelShape model_shape(const ModelSettings& model);
 
-/// Loads and validates a configuration file. Throws ConfigError("file:line: ...").
-RigConfig load_config(const std::filesystem::path& file);
+/// Loads and validates a configuration file, with `overrides` (--set KEY=VALUE,
+/// io/config/overrides.h) put into it and the vehicle files it names. Throws
+/// ConfigError("file:line: ..." or "--set KEY=VALUE: ...").
+RigConfig load_config(const std::filesystem::path& file,
+                      const io::config::Overrides& overrides = {});
 
 }  // namespace rig

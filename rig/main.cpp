@@ -59,6 +59,17 @@ CLI::Validator cpu_validator() {
 void add_run(CLI::App& app, rig::RunOptions& run, std::string& stall) {
   auto* run_cmd = app.add_subcommand("run", "run the simulator loop");
   run_cmd->add_option("--config", run.config_file, "configuration file (TOML)")->required();
+  run_cmd
+      ->add_option("--set", run.sets,
+                   "KEY=VALUE: set a configuration key before it is read, also of the vehicle "
+                   "file (vehicle.chassis.mass_kg=1600; unit<k>. for a combination's units); "
+                   "repeatable (docs/sweeps.md)")
+      ->allow_extra_args(false);
+  run_cmd->add_option("--junit", run.junit,
+                      "write the KPIs as JUnit XML to FILE (one <testsuite>, one <testcase> per "
+                      "KPI)");
+  run_cmd->add_flag("--fail-on-kpi", run.fail_on_kpi,
+                    "exit 3 if a KPI failed its limits (a run failure stays exit 1)");
   run_cmd->add_option("--duration", run.duration_s,
                       "stop after S seconds (default: [rig] duration_s or forever); finite, at "
                       "least one period");

@@ -110,7 +110,7 @@ ExecutiveParams executive_params(const RigConfig& config, const RunOptions& opti
 
 int assemble(const RunOptions& options, RunParts& parts) {
   try {
-    parts.config = load_config(options.config_file);
+    parts.config = load_config(options.config_file, io::config::Overrides(options.sets));
     check_duration(options, parts.config);
     parts.io = make_io(parts.config, options);
     parts.model = make_model(parts.config);

@@ -390,8 +390,10 @@ void check_axle_order(std::vector<StrictTable>& tables, const std::vector<AxlePa
 
 }  // namespace
 
-VehicleParams load_vehicle_file(const std::filesystem::path& file) {
-  const toml::table root = load_toml_file(file);
+VehicleParams load_vehicle_file(const std::filesystem::path& file,
+                                const std::vector<Override>& patch) {
+  toml::table root = load_toml_file(file);
+  apply_overrides(patch, root, file);
   StrictTable t(root, file, "vehicle");
   VehicleParams p;
   p.name = t.string("name");
@@ -464,10 +466,10 @@ model::road::RoadParams read_road(StrictTable& m) {
   return r;
 }
 
-VehicleModelSettings read_vehicle_model(StrictTable& m) {
+VehicleModelSettings read_vehicle_model(StrictTable& m, const std::vector<Override>& patch) {
   VehicleModelSettings v;
   v.file = m.existing_path("vehicle");
-  v.params = load_vehicle_file(v.file);
+  v.params = load_vehicle_file(v.file, patch);
   // Alone on its axles (not in a combination) a vehicle stands only if its CG (x = 0) lies
   // between the first and the last axle.
   const auto& axles = v.params.axles;
