@@ -140,11 +140,25 @@ void read_driver(io::config::StrictTable& t, const RoutingRequests& requests,
   }
 }
 
-/// The inputs the configured driver can write.
+/// The inputs the configured driver and the events can write.
 io::InputSet driver_writes(const RigConfig& c) {
-  if (c.path_driver) return driver::path_driver_inputs();
-  if (c.driver) return driver::table_driver_inputs(*c.driver);
-  return {};
+  io::InputSet s = driver::event_inputs(c.events);
+  if (c.path_driver) s |= driver::path_driver_inputs();
+  if (c.driver) s |= driver::table_driver_inputs(*c.driver);
+  return s;
+}
+
+/// An event must not set an input [routing] gives to CAN (the ECU's value would be overwritten).
+void check_event_routes(const RigConfig& c, const RoutingRequests& requests,
+                        const RouteLocations& routes) {
+  for (const auto& e : c.events) {
+    for (const auto& set : e.set) {
+      if (requests[set.slot] == RouteRequest::kCan)
+        throw io::config::ConfigError(set.at + ": [[event]] '" + e.name + "' do.set " + set.name +
+                                      ": routed to CAN in [routing] (" + routes[set.slot].at +
+                                      "); an event sets inputs the driver side feeds");
+    }
+  }
 }
 
 /// Where each input routed to CAN is; without a [can] section such a route is an error (the
@@ -205,6 +219,8 @@ RigConfig load_config(const std::filesystem::path& file, const io::config::Overr
     c.can = io::can::bridge::read_can_settings(*t, c.catalogue);
   if (routing) locate_can_routes(*routing, requests, routes, c);
   if (auto t = top.optional_table("lcm")) c.lcm = io::lcm::read_lcm_settings(*t, c.catalogue);
+  c.events = driver::read_events(top, *c.catalogue);
+  check_event_routes(c, requests, routes);
   c.kpis = kpi::read_kpis(top, *c.catalogue);
   top.finish();  // unknown top-level sections
   c.routing = resolve_routing(requests, driver_writes(c));

@@ -18,6 +18,7 @@
 #include "io/signals/catalogue.h"
 #include "model/paper/quarter_car_params.h"
 #include "rig/driver/path_driver.h"
+#include "rig/driver/scenario_events.h"
 #include "rig/driver/table_driver.h"
 #include "rig/kpi/kpi_spec.h"
 #include "rig/overrun_policy.h"
@@ -73,6 +74,8 @@ struct RigConfig {
   /// `file:line` and name of each [routing] entry `= "can"` ("" for the others), for errors
   /// found when the mapping is loaded (an input routed to CAN that no [[rx]] signal receives).
   RouteLocations can_route_at{};
+  /// [[event]]: conditions and what they do (rig/driver/scenario_events.h, docs/scenarios.md).
+  std::vector<driver::EventSpec> events;
   /// [[kpi]]: what the run measures for the summary's `kpis` (rig/kpi, docs/kpis.md).
   std::vector<kpi::KpiSpec> kpis;
 };

@@ -115,6 +115,8 @@ int assemble(const RunOptions& options, RunParts& parts) {
     parts.io = make_io(parts.config, options);
     parts.model = make_model(parts.config);
     parts.driver = make_driver(parts.config);
+    if (!parts.config.events.empty())
+      parts.events = std::make_unique<driver::EventStage>(parts.config.events);
     open_outputs(options, parts);
   } catch (const io::config::ConfigError& e) {
     std::cerr << e.what() << "\n";

@@ -73,11 +73,17 @@ int finish_run(const Executive& exec, EventLog& log, const FinishInputs& in,
   extras.wall_time_s = static_cast<double>(wall.now_ns() - in.wall_start_ns) * 1e-9;
   extras.stop_reason = stop_reason_name(in.reason);
   extras.events_lost = log.lost();
+  extras.config_file = options.config_file;
+  extras.sets = options.sets;
   if (log.write_failures() > 0)
     failures.push_back(
         {log.write_failures(), "overrun log " + options.overrun_log + ": " + log.write_error()});
   extras.write_failures = failures;
   if (in.kpis != nullptr) extras.kpis = in.kpis->results();
+  if (in.events != nullptr) {
+    for (std::size_t i = 0; i < in.events->specs().size(); ++i)
+      extras.scenario_events.push_back({in.events->specs()[i].name, in.events->fired_at_s(i)});
+  }
   extras.exit_code = !message.empty() ? 1 : failures.empty() ? 0 : kExitOutputLost;
   std::cerr.clear();  // a line dropped by a full stderr (rig/stderr_relay.h) set badbit
   std::cerr << summary_report(exec, extras);

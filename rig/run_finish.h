@@ -27,6 +27,7 @@ struct FinishInputs {
   std::vector<const io::SnapshotSink*> sinks;  ///< stopped: their write failures are final
   std::FILE* summary = nullptr;                ///< --summary-json, opened before the loop
   const kpi::KpiRecorder* kpis = nullptr;      ///< [[kpi]] (stopped), null if none
+  const driver::EventStage* events = nullptr;  ///< [[event]], null if none
 };
 
 /// Returns the exit code: 0; 1 (abort-after, non-finite model, a vehicle fault stopped or held);
