@@ -221,7 +221,8 @@ RigConfig load_config(const std::filesystem::path& file, const io::config::Overr
   if (auto t = top.optional_table("lcm")) c.lcm = io::lcm::read_lcm_settings(*t, c.catalogue);
   c.events = driver::read_events(top, *c.catalogue);
   check_event_routes(c, requests, routes);
-  c.kpis = kpi::read_kpis(top, *c.catalogue);
+  const driver::PathDriverVehicle geometry = path_driver_vehicle(c.model);
+  c.kpis = kpi::read_kpis(top, *c.catalogue, {geometry.wheelbase_m, geometry.steering_ratio});
   top.finish();  // unknown top-level sections
   c.routing = resolve_routing(requests, driver_writes(c));
   return c;

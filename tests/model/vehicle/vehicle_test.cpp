@@ -487,7 +487,8 @@ TEST(VehicleConfig, ManeuverFilesNameTheirVehicleAndRunAtOneMillisecond) {
     run(m, s, 0.2, nullptr);
     EXPECT_NEAR(s[Signal::kVehicleSpeed], settings.initial_speed_mps, 0.5) << entry.path();
   }
-  EXPECT_EQ(files, 9);  // + weave, parking effort (0 and 5 km/h), returnability (issue 15)
+  EXPECT_EQ(files, 10);  // + weave, parking effort (0 and 5 km/h), returnability (issue 15),
+                         // braking 100-0 (issue 18)
 }
 
 TEST(Vehicle, TruckStepSteerSettlesAtOneAndTwoMilliseconds) {
