@@ -48,7 +48,8 @@ int run(const RunOptions& options) {
                       {sinks.begin(), sinks.end()},
                       parts.summary.get(),
                       parts.kpis.get(),
-                      parts.events.get()};
+                      parts.events.get(),
+                      parts.junit.get()};
   return finish_run(exec, *parts.log, finish, options, notifier, wall);
 }
 

@@ -38,6 +38,8 @@ struct RunParts {
   std::unique_ptr<kpi::KpiRecorder> kpis;
   /// --summary-json, created before the loop starts (written at the end); null if none.
   std::unique_ptr<std::FILE, FileCloser> summary;
+  /// --junit, likewise.
+  std::unique_ptr<std::FILE, FileCloser> junit;
 
   [[nodiscard]] std::vector<io::CycleIo*> io_adapters() const;
   [[nodiscard]] std::vector<io::SnapshotSink*> snapshot_sinks() const;
