@@ -101,8 +101,8 @@ std::string junit_text(const SummaryExtras& x, const std::string& message,
   kpi::JunitSuite s;
   s.name = std::filesystem::path(options.config_file).stem().string();
   s.package = "rig";
-  s.timestamp = kpi::junit_timestamp(wall.realtime_ns() -
-                                     static_cast<std::int64_t>(x.wall_time_s * 1e9));
+  s.timestamp =
+      kpi::junit_timestamp(wall.realtime_ns() - static_cast<std::int64_t>(x.wall_time_s * 1e9));
   s.hostname = kpi::host_name();
   s.time_s = x.wall_time_s;
   s.properties.emplace_back("config", options.config_file);

@@ -57,7 +57,9 @@ int failures(const JunitSuite& s) {
   return n;
 }
 
-int errors(const JunitSuite& s) { return s.run_error.empty() ? 0 : static_cast<int>(s.kpis.size()); }
+int errors(const JunitSuite& s) {
+  return s.run_error.empty() ? 0 : static_cast<int>(s.kpis.size());
+}
 
 std::string testcase(const JunitSuite& s, const KpiResult& k) {
   std::string j = "    <testcase name=\"" + xml(k.name) + "\" classname=\"" +

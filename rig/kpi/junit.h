@@ -28,14 +28,14 @@ namespace rig::kpi {
 
 /// One run: a <testsuite>.
 struct JunitSuite {
-  std::string name;        ///< the suite (a maneuver file's stem, a sweep's run id)
-  std::string package;     ///< the testcases' classname prefix ("rig" or the sweep's name)
-  std::string timestamp;   ///< the run's start, "YYYY-MM-DDTHH:MM:SS" (UTC)
+  std::string name;       ///< the suite (a maneuver file's stem, a sweep's run id)
+  std::string package;    ///< the testcases' classname prefix ("rig" or the sweep's name)
+  std::string timestamp;  ///< the run's start, "YYYY-MM-DDTHH:MM:SS" (UTC)
   std::string hostname;
-  double time_s = 0.0;     ///< the run's wall time
+  double time_s = 0.0;  ///< the run's wall time
   std::vector<std::pair<std::string, std::string>> properties;
   std::vector<KpiResult> kpis;
-  std::string run_error;   ///< "" if the run ended as asked; else every KPI is an <error>
+  std::string run_error;  ///< "" if the run ended as asked; else every KPI is an <error>
 };
 
 /// `<testsuites>` holding one `<testsuite>` per run, with the XML declaration.
