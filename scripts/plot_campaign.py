@@ -5,9 +5,10 @@ Reads DIR/campaign.csv (rig/sweep/sweep_collect.h: one row per run) and DIR/plan
 varied keys), writes DIR/plots/ and prints the path of each figure:
   status.png        how many runs ended ok, with a failed KPI, failed or missing; and per KPI
                     how many runs passed it, failed it or gave no value
-  kpi_<NAME>.png    the KPI over the first varied key (each run a point, failed ones marked,
-                    coloured by the second varied key if there is one; over the run number
-                    without [[vary]]), its limits as dashed lines (from a run's summary)
+  kpi_<NAME>.png    with two or more numeric [[vary]] keys: the KPI's mean and the share of runs
+                    that passed it over the grid of the first two (the other axes averaged);
+                    with one: the KPI over it, each run a point (failed ones marked), its
+                    limits as dashed lines (from a run's summary); without: over the run number
 """
 import csv
 import json
@@ -114,6 +115,51 @@ def plot_kpi(out, rows, name, vary, figures):
     figures.append(path)
 
 
+def plot_grid(out, rows, name, vary, figures):
+    """Mean value and pass share of a KPI over the first two numeric varied keys."""
+    kx, ky = vary[0], vary[1]
+    xs = sorted({number(r[kx]) for r in rows if number(r[kx]) is not None})
+    ys = sorted({number(r[ky]) for r in rows if number(r[ky]) is not None})
+    cells = {}
+    for r in rows:
+        key = (number(r[kx]), number(r[ky]))
+        cells.setdefault(key, []).append((number(r[name]), r[f"{name}.passed"] == "1"))
+    mean = [[math.nan] * len(xs) for _ in ys]
+    share = [[math.nan] * len(xs) for _ in ys]
+    for (x, y), vals in cells.items():
+        if x is None or y is None:
+            continue
+        v = [a for a, _ in vals if a is not None]
+        mean[ys.index(y)][xs.index(x)] = sum(v) / len(v) if v else math.nan
+        share[ys.index(y)][xs.index(x)] = sum(p for _, p in vals) / len(vals)
+    fig, axes = plt.subplots(1, 2, figsize=(13, 5))
+    lo, hi = limits_of(out, name, rows)
+    limits = f"limits [{'-' if lo is None else f'{lo:g}'}, {'-' if hi is None else f'{hi:g}'}]"
+    for ax, grid, title, cmap in ((axes[0], mean, f"{name}: mean ({limits})", "viridis"),
+                                  (axes[1], share, f"{name}: share of runs passed", "RdYlGn")):
+        im = ax.imshow(grid, origin="lower", aspect="auto", cmap=cmap,
+                       vmin=0 if grid is share else None, vmax=1 if grid is share else None)
+        ax.set_xticks(range(len(xs)), [f"{x:g}" for x in xs], rotation=45)
+        ax.set_yticks(range(len(ys)), [f"{y:g}" for y in ys])
+        ax.set_xlabel(kx)
+        ax.set_ylabel(ky)
+        ax.set_title(title, fontsize=10)
+        fig.colorbar(im, ax=ax)
+        if len(xs) * len(ys) <= 144:
+            for j, row in enumerate(grid):
+                for i, v in enumerate(row):
+                    if not math.isnan(v):
+                        ax.text(i, j, f"{v:.2g}", ha="center", va="center", fontsize=7)
+    others = [k for k in vary[2:]]
+    if others:
+        fig.suptitle(f"averaged over {', '.join(others)}", fontsize=9)
+    fig.tight_layout()
+    path = out / "plots" / f"kpi_{re.sub(r'[^A-Za-z0-9_.-]', '_', name)}.png"
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    figures.append(path)
+
+
 def main():
     if len(sys.argv) != 2:
         print("usage: plot_campaign.py DIR", file=sys.stderr)
@@ -131,7 +177,10 @@ def main():
     plot_status(out, rows, kpis, figures)
     numeric_vary = [k for k in vary if any(number(r[k]) is not None for r in rows)]
     for name in kpis:
-        plot_kpi(out, rows, name, numeric_vary, figures)
+        if len(numeric_vary) >= 2:
+            plot_grid(out, rows, name, numeric_vary, figures)
+        else:
+            plot_kpi(out, rows, name, numeric_vary, figures)
     for path in figures:
         print(path)
     return 0
