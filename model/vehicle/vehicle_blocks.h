@@ -8,6 +8,7 @@
 /// stages, one without steered axles no steering stage (their states stay at rest).
 
 #include <memory>
+#include <variant>
 #include <vector>
 
 #include "model/solver/arrowhead_factorization.h"
@@ -53,11 +54,14 @@ class VehicleBlocks {
   [[nodiscard]] const solver::SequentialStepper& sequence() const noexcept { return sequence_; }
   [[nodiscard]] VehicleFramework& framework() noexcept { return framework_; }
   [[nodiscard]] const VehicleFramework& framework() const noexcept { return framework_; }
-  /// The simple model's steering block (its coordinates are state.steering_y, steering_z); only
-  /// with [steering] model = "simple".
-  [[nodiscard]] SimpleSteering& steering() noexcept { return *simple_steering_; }
-  /// The enhanced model's block (steering system + knuckles), nullptr with the simple model.
-  [[nodiscard]] EnhancedSteering* enhanced_steering() noexcept { return enhanced_steering_.get(); }
+  /// The steering's block, whichever `[steering] model` built: the simple model's 2 DOF (its
+  /// coordinates are state.steering_y, steering_z) or the enhanced model's system + knuckles.
+  /// Exactly one alternative, never null.
+  using SteeringBlock = std::variant<SimpleSteering*, EnhancedSteering*>;
+  [[nodiscard]] SteeringBlock steering_block() noexcept {
+    if (enhanced_steering_) return enhanced_steering_.get();
+    return simple_steering_.get();
+  }
   /// The rack side's system (sec. 2.2): begin_step before the implicit step, report values.
   [[nodiscard]] SteeringSystem& steering_system() noexcept { return *steering_system_; }
   [[nodiscard]] const Drivetrain& drivetrain() const noexcept { return drivetrain_; }

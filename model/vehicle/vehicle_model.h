@@ -75,10 +75,10 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
   [[nodiscard]] const VehicleWorkspace& workspace() const noexcept { return work_; }
   [[nodiscard]] VehicleFramework& framework() noexcept { return blocks_->framework(); }
   [[nodiscard]] const VehicleFramework& framework() const noexcept { return blocks_->framework(); }
-  [[nodiscard]] SimpleSteering& steering() noexcept { return blocks_->steering(); }
-  /// The enhanced steering block, nullptr with [steering] model = "simple".
-  [[nodiscard]] EnhancedSteering* enhanced_steering() noexcept {
-    return blocks_->enhanced_steering();
+  /// The steering block of the configured model (VehicleBlocks::steering_block: the simple or
+  /// the enhanced one, never null).
+  [[nodiscard]] VehicleBlocks::SteeringBlock steering_block() noexcept {
+    return blocks_->steering_block();
   }
   /// Vertical tire force of wheel i after the last step [N].
   [[nodiscard]] double wheel_load_n(int i) const noexcept;

@@ -44,28 +44,32 @@ double ColumnSteering::assist_for_torsion_bar_nm(double torsion_bar_nm) const no
   return p_.assist_max_nm * std::tanh(p_.assist_gain * torsion_bar_nm / p_.assist_max_nm);
 }
 
-double ColumnSteering::active_return_weight(double torsion_bar_nm) const noexcept {
+double ColumnSteering::active_return_speed_weight() const noexcept {
   const ActiveReturnParams& r = p_.active_return;
   if (r.torque_max_nm <= 0 || !inputs_.ignition_on || inputs_.assist_from_input) return 0.0;
-  // f(v): the trapezoid over the vehicle's speed; then the driver's hands fade it out
+  // f(v): the trapezoid over the vehicle's speed
   const double v = std::abs(state_.framework_z(0));
   const auto ramp = [](double x, double from, double to) {
     return to > from ? std::clamp((x - from) / (to - from), 0.0, 1.0) : (x >= to ? 1.0 : 0.0);
   };
-  const double f_v = ramp(v, r.speed_mps[0], r.speed_mps[1]) *
-                     (1.0 - ramp(v, r.speed_mps[2], r.speed_mps[3]));
-  return f_v * std::max(0.0, 1.0 - std::abs(torsion_bar_nm) / r.hands_off_nm);
+  return ramp(v, r.speed_mps[0], r.speed_mps[1]) * (1.0 - ramp(v, r.speed_mps[2], r.speed_mps[3]));
+}
+
+double ColumnSteering::active_return_demand_nm(const Vector& y, const Vector& z) const noexcept {
+  const ActiveReturnParams& r = p_.active_return;
+  const double i = p_.rack_per_pinion_m_per_rad;
+  const double theta = y(1) / i, theta_rate = z(1) / i;  // the pinion (the EPS motor's sensor)
+  return -(r.torque_max_nm * std::clamp(theta / r.saturation_angle_rad, -1.0, 1.0) +
+           r.damping_nmspr * theta_rate);
 }
 
 double ColumnSteering::active_return_nm(const Vector& y, const Vector& z,
                                         double torsion_bar_nm) const noexcept {
-  const double w = active_return_weight(torsion_bar_nm);
-  if (w == 0.0) return 0.0;
-  const ActiveReturnParams& r = p_.active_return;
-  const double i = p_.rack_per_pinion_m_per_rad;
-  const double theta = y(1) / i, theta_rate = z(1) / i;  // the pinion (the EPS motor's sensor)
-  return -w * (r.torque_max_nm * std::clamp(theta / r.saturation_angle_rad, -1.0, 1.0) +
-               r.damping_nmspr * theta_rate);
+  const double f_v = active_return_speed_weight();
+  if (f_v == 0.0) return 0.0;
+  // the driver's hands fade it out
+  const double hands = std::max(0.0, 1.0 - std::abs(torsion_bar_nm) / p_.active_return.hands_off_nm);
+  return f_v * hands * active_return_demand_nm(y, z);
 }
 
 double ColumnSteering::assist_torque_nm(const Vector& y, const Vector& z) const noexcept {
@@ -108,15 +112,22 @@ void ColumnSteering::force_jacobians(const Vector& y, const Vector& z, Matrix& d
   const double g = (1 + dassist) / i;
   dq_dy << -robot_c - c, c / i, g * c, -g * c / i;
   dq_dz << -robot_d - d - p_.column_damping_nmspr, d / i, g * d, -g * d / i;
-  // the active return's slope and damping on the pinion angle (its weight held over the step)
-  const double w = active_return_weight(torsion_bar_torque_nm(y, z));
-  if (w > 0) {
+  // the active return: its slope and damping on the pinion angle, and its fade with the
+  // torsion-bar torque (a slope on T_tb like the boost curve's)
+  const double f_v = active_return_speed_weight();
+  if (f_v > 0) {
     const ActiveReturnParams& r = p_.active_return;
+    const double tb = torsion_bar_torque_nm(y, z);
+    const double hands = std::max(0.0, 1.0 - std::abs(tb) / r.hands_off_nm);
+    const double dhands_dtb = hands > 0 ? -std::copysign(1.0, tb) / r.hands_off_nm : 0.0;
+    const double dreturn_dtb = f_v * dhands_dtb * active_return_demand_nm(y, z);
+    dq_dy.row(1) += dreturn_dtb / i * Eigen::RowVector2d(c, -c / i);
+    dq_dz.row(1) += dreturn_dtb / i * Eigen::RowVector2d(d, -d / i);
     const double theta = y(1) / i;
     const double slope =
         std::abs(theta) < r.saturation_angle_rad ? r.torque_max_nm / r.saturation_angle_rad : 0.0;
-    dq_dy(1, 1) -= w * slope / (i * i);
-    dq_dz(1, 1) -= w * r.damping_nmspr / (i * i);
+    dq_dy(1, 1) -= f_v * hands * slope / (i * i);
+    dq_dz(1, 1) -= f_v * hands * r.damping_nmspr / (i * i);
   }
 }
 

@@ -45,8 +45,10 @@ class ColumnSteering final : public SteeringSystem {
                                         double torsion_bar_nm) const noexcept;
 
  private:
-  /// f(v) x the hands-off fade of the active return, 0 when it does not act.
-  [[nodiscard]] double active_return_weight(double torsion_bar_nm) const noexcept;
+  /// The active return's speed schedule f(v), 0 when it does not act at all.
+  [[nodiscard]] double active_return_speed_weight() const noexcept;
+  /// -(T_max clamp(theta / theta_sat) + d theta'): the return before its weights [N m].
+  [[nodiscard]] double active_return_demand_nm(const Vector& y, const Vector& z) const noexcept;
 
   const SteeringParams& p_;
   VehicleState& state_;

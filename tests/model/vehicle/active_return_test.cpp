@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -98,41 +99,51 @@ TEST(ActiveReturn, OffWithTheEcusAssistOrTheIgnitionOffOrWithoutItsKeys) {
   EXPECT_EQ(r.return_nm(0.0), 0.0);
 }
 
-// The implicit step's partials of q(1) (the rack's force) in the rack travel and speed include the
-// return's slope T_max / theta_sat / i_SB^2 and damping d / i_SB^2: finite differences agree.
+// The implicit step's partials of the column's forces include the return's: its slope T_max /
+// theta_sat / i_SB^2 and damping d / i_SB^2 on the rack, and its fade with the torsion-bar torque
+// (a slope on T_tb, as the boost curve's): all of the 2 x 2 against central finite differences,
+// at states in the linear part, saturated, and with the driver's torque of either sign.
 TEST(ActiveReturn, PartialsMatchFiniteDifferences) {
   const SteeringParams p = sedan_steering();
+  const double i = p.rack_per_pinion_m_per_rad;
+  for (const auto& [pinion, twist_nm, rate] :
+       {std::tuple{0.1, 0.2, 0.04}, std::tuple{0.1, -0.7, -0.3}, std::tuple{-0.5, 1.2, 0.2},
+        std::tuple{0.2, 0.0, 0.0}}) {
+    Rig r(p, 15.0);  // on the trapezoid's falling side: f(v) = 0.65
+    r.pose(pinion, twist_nm);
+    r.state.steering_z << rate + 0.01, rate * i;
+    const Eigen::Vector2d y = r.state.steering_y, z = r.state.steering_z;
+    Eigen::Matrix2d jy, jz, fy, fz;
+    r.system.force_jacobians(y, z, jy, jz);
+    const auto q_of = [&](const Eigen::Vector2d& yy, const Eigen::Vector2d& zz) {
+      Eigen::Vector2d q;
+      r.system.applied_forces(yy, zz, q);
+      return q;
+    };
+    for (int j = 0; j < 2; ++j) {
+      const double ey = 1e-7 * (j == 0 ? 1.0 : i), ez = ey;
+      Eigen::Vector2d dy = Eigen::Vector2d::Zero(), dz = Eigen::Vector2d::Zero();
+      dy(j) = ey;
+      dz(j) = ez;
+      fy.col(j) = (q_of(y + dy, z) - q_of(y - dy, z)) / (2 * ey);
+      fz.col(j) = (q_of(y, z + dz) - q_of(y, z - dz)) / (2 * ez);
+    }
+    EXPECT_LT((jy - fy).norm(), 1e-6 * fy.norm()) << pinion << " " << twist_nm << "\n"
+                                                  << jy << "\n"
+                                                  << fy;
+    EXPECT_LT((jz - fz).norm(), 1e-6 * fz.norm()) << pinion << " " << twist_nm << "\n"
+                                                  << jz << "\n"
+                                                  << fz;
+  }
+  // at a fixed twist (hands-off weight 1 - 0.2 / 2, f(v) = 1 at 5 m/s) the rack's own partials
+  // are the return's: 0.9 x 2.5 / 0.3 / i^2 and 0.9 x 0.3 / i^2
   Rig r(p, 5.0);
   r.pose(0.1, 0.2);
-  r.state.steering_z << 0.04, 0.04 * p.rack_per_pinion_m_per_rad;  // no twist rate
-  Eigen::Vector2d y = r.state.steering_y, z = r.state.steering_z;
   Eigen::Matrix2d jy, jz;
-  r.system.force_jacobians(y, z, jy, jz);
-  const auto q_of = [&](const Eigen::Vector2d& yy, const Eigen::Vector2d& zz) {
-    Eigen::Vector2d q;
-    r.system.applied_forces(yy, zz, q);
-    return q;
-  };
-  // the hands-off weight is held over the step (as in the code), so compare at a fixed twist:
-  // wheel and rack moved together
-  const double e = 1e-9;
-  Eigen::Vector2d y2 = y, z2 = z;
-  y2(1) += e;
-  y2(0) += e / p.rack_per_pinion_m_per_rad;  // same twist: the weight stays
-  const double slope_fd = (q_of(y2, z)(1) - q_of(y, z)(1)) / e;
-  z2(1) += e;
-  z2(0) += e / p.rack_per_pinion_m_per_rad;
-  const double damping_fd = (q_of(y, z2)(1) - q_of(y, z)(1)) / e;
-  const double slope = jy(1, 1) + jy(1, 0) / p.rack_per_pinion_m_per_rad;
-  const double damping = jz(1, 1) + jz(1, 0) / p.rack_per_pinion_m_per_rad;
-  std::printf("dq_rack/du at fixed twist: %.1f (finite difference %.1f) N/m; d/du': %.1f (%.1f)\n",
-              slope, slope_fd, damping, damping_fd);
-  EXPECT_NEAR(slope, slope_fd, 1e-4 * std::abs(slope_fd));
-  EXPECT_NEAR(damping, damping_fd, 1e-4 * std::abs(damping_fd));
-  // and they are the return's: (1 - 0.2 / 2) x 2.5 / 0.3 / i^2, (1 - 0.1) x 0.3 / i^2
-  const double i2 = p.rack_per_pinion_m_per_rad * p.rack_per_pinion_m_per_rad;
-  EXPECT_NEAR(slope, -0.9 * 2.5 / 0.3 / i2, 1e-6 * 0.9 * 2.5 / 0.3 / i2);
-  EXPECT_NEAR(damping, -0.9 * 0.3 / i2, 1e-6 * 0.9 * 0.3 / i2);
+  r.system.force_jacobians(r.state.steering_y, r.state.steering_z, jy, jz);
+  const double i2 = i * i;
+  EXPECT_NEAR(jy(1, 1) + jy(1, 0) / i, -0.9 * 2.5 / 0.3 / i2, 1e-6 * 0.9 * 2.5 / 0.3 / i2);
+  EXPECT_NEAR(jz(1, 1) + jz(1, 0) / i, -0.9 * 0.3 / i2, 1e-6 * 0.9 * 0.3 / i2);
 }
 
 // Released (torque input, hand 0) at 20 km/h from 1.5 rad, no tire load: the return torque turns

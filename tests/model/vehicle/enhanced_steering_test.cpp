@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <unistd.h>
@@ -21,6 +22,8 @@
 #include "model/vehicle/vehicle_model.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
+#include "tests/support/steering_axis_off.h"
+#include "tests/support/step_steer.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -39,25 +42,13 @@ struct History {
 
 constexpr double kSampleS = 0.02;
 
-/// ISO 7401 step steer at 80 km/h: the wheel angle ramps to sw_rad in 0.1 s from t = 1 s.
-History step_steer(const VehicleParams& p, double h, double sw_rad, double duration_s = 4.0) {
-  VehicleModel m(p, h);
-  Signals s = test::all_driver_inputs();
-  const double v_mps = 80 / 3.6;
-  m.set_forward_speed(v_mps);
+/// ISO 7401 step steer at 80 km/h (tests/support/step_steer.h): the wheel angle ramps to sw_rad
+/// in 0.1 s from t = 1 s; 4 s.
+History step_steer(const VehicleParams& p, double h, double sw_rad) {
   History out;
   double t_prev = 0, yaw_prev = 0, rack_prev = 0;
   double next_sample = 0;
-  const long n = std::lround(duration_s / h);
-  for (long k = 0; k < n; ++k) {
-    const double t = m.time_s();
-    s[Signal::kSteeringWheelAngleCmd] = sw_rad * std::clamp((t - 1.0) / 0.1, 0.0, 1.0);
-    s[Signal::kThrottlePedal] =
-        std::clamp(0.2 + 0.5 * (v_mps - s[Signal::kVehicleSpeed]), 0.0, 1.0);
-    if (m.step(s) != StepStatus::kOk || !std::isfinite(s[Signal::kYawRate])) {
-      out.finite = false;
-      return out;
-    }
+  const auto sample = [&](double /*t*/, const VehicleModel& m, const Signals& s) {
     const double t1 = m.time_s(), yaw = s[Signal::kYawRate], rack = s[Signal::kRackPosition];
     while (next_sample <= t1 + 1e-12) {
       const double a = t1 > t_prev ? (next_sample - t_prev) / (t1 - t_prev) : 1.0;
@@ -66,7 +57,8 @@ History step_steer(const VehicleParams& p, double h, double sw_rad, double durat
       next_sample += kSampleS;
     }
     t_prev = t1, yaw_prev = yaw, rack_prev = rack;
-  }
+  };
+  out.finite = test::run_step_steer(p, h, {.sw_rad = sw_rad, .duration_s = 4.0}, sample);
   return out;
 }
 
@@ -111,6 +103,19 @@ TEST(EnhancedSteering, StepSteerConvergesUpToAtLeastTwoMilliseconds) {
   EXPECT_GE(largest_ok, 2e-3);
 }
 
+/// A steady circle: the wheel angle held at 1.1 rad at 10 m/s in first gear (R ~ 40 m), 12 s.
+void drive_steady_circle(VehicleModel& m, Signals& sig) {
+  const double v = 10.0;
+  m.set_forward_speed(v);
+  sig[Signal::kGearRequest] = 1;
+  for (int k = 0; k < 12000; ++k) {
+    sig[Signal::kSteeringWheelAngleCmd] = 1.1;
+    sig[Signal::kThrottlePedal] =
+        std::clamp(0.1 + 0.8 * (v - sig[Signal::kVehicleSpeed]), 0.0, 1.0);
+    ASSERT_EQ(m.step(sig), StepStatus::kOk);
+  }
+}
+
 /// The same geometry for both models (no caster trail; the sedan has no Ackermann, kingpin
 /// inclination or bore torque) and stiff tie rods.
 VehicleParams same_geometry(SteeringModel model) {
@@ -145,15 +150,8 @@ TEST(EnhancedSteering, AgreesWithTheSimpleModelAtStiffTieRods) {
     const VehicleParams p = same_geometry(model);
     VehicleModel m(p, 1e-3);
     Signals sig = test::all_driver_inputs();
-    const double v = 10.0;
-    m.set_forward_speed(v);
-    sig[Signal::kGearRequest] = 1;
-    for (int k = 0; k < 12000; ++k) {
-      sig[Signal::kSteeringWheelAngleCmd] = 1.1;
-      sig[Signal::kThrottlePedal] =
-          std::clamp(0.1 + 0.8 * (v - sig[Signal::kVehicleSpeed]), 0.0, 1.0);
-      ASSERT_EQ(m.step(sig), StepStatus::kOk);
-    }
+    drive_steady_circle(m, sig);
+    ASSERT_FALSE(HasFatalFailure());
     steer_rad = 0.5 * (m.workspace().wheels[0].steer_rad + m.workspace().wheels[1].steer_rad);
     ay_mps2 = sig[Signal::kVehicleSpeed] * sig[Signal::kYawRate];
   };
@@ -173,22 +171,11 @@ TEST(EnhancedSteering, AgreesWithTheSimpleModelAtStiffTieRods) {
 TEST(EnhancedSteering, StaticTieRodForceIsTheAxisMomentOverTheLever) {
   // the hand moment knows the trail only: the axis geometry's and the bore torque's moments off
   VehicleParams p = sedan(SteeringModel::kEnhanced);
-  for (AxleParams& axle : p.axles) {
-    axle.tire.tmeasy.bore.enabled = false;
-    axle.caster_angle_rad = axle.kingpin_inclination_rad = axle.scrub_radius_m = 0;
-    axle.spindle_offset_m = 0;
-  }
+  test::without_steering_axis(p);
   VehicleModel m(p, 1e-3);
   Signals sig = test::all_driver_inputs();
-  const double v = 10.0;
-  m.set_forward_speed(v);
-  sig[Signal::kGearRequest] = 1;
-  for (int k = 0; k < 12000; ++k) {
-    sig[Signal::kSteeringWheelAngleCmd] = 1.1;
-    sig[Signal::kThrottlePedal] =
-        std::clamp(0.1 + 0.8 * (v - sig[Signal::kVehicleSpeed]), 0.0, 1.0);
-    ASSERT_EQ(m.step(sig), StepStatus::kOk);
-  }
+  drive_steady_circle(m, sig);
+  ASSERT_FALSE(HasFatalFailure());
   const AxleParams& front = p.axles[0];
   const double arm = p.steering.steering_arm_m;
   ModelReport report;
@@ -256,7 +243,9 @@ TEST(EnhancedSteering, AnalyticJacobiansAndNoAllocationPerStep) {
   }
   Eigen::internal::set_is_malloc_allowed(true);
   EXPECT_EQ(counter.count(), 0u);
-  EnhancedSteering* st = m.enhanced_steering();
+  const auto block = m.steering_block();
+  ASSERT_TRUE(std::holds_alternative<EnhancedSteering*>(block));
+  EnhancedSteering* st = std::get<EnhancedSteering*>(block);
   ASSERT_NE(st, nullptr);
   ASSERT_EQ(st->size(), 4);  // wheel angle, rack, two knuckles
   st->gather();

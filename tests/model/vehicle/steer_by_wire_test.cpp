@@ -15,6 +15,7 @@
 #include "model/vehicle/vehicle_model.h"
 #include "model/vehicle/vehicle_signals.h"
 #include "tests/support/driver_inputs.h"
+#include "tests/support/steering_axis_off.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -273,11 +274,7 @@ TEST(SteerByWire, ForceCommandMovesTheRackAgainstTheTires) {
                       sp.rack_actuator_inertia_kgm2 / std::pow(sp.rack_actuator_ratio_m_per_rad, 2);
   const double a = sp.rack_actuator_damping_nspm / mass;
   VehicleParams free_rack = p;
-  for (AxleParams& axle : free_rack.axles) {
-    axle.tire.tmeasy.bore.enabled = false;
-    axle.caster_angle_rad = axle.kingpin_inclination_rad = axle.scrub_radius_m = 0;
-    axle.spindle_offset_m = 0;
-  }
+  test::without_steering_axis(free_rack);
   for (const double f : {150.0, -150.0}) {
     VehicleModel m(free_rack, 1e-3);
     m.settle(0.0, 0);

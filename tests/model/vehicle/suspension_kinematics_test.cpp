@@ -18,6 +18,7 @@
 #include "model/vehicle/suspension_kinematics.h"
 #include "model/vehicle/vehicle_model.h"
 #include "tests/support/driver_inputs.h"
+#include "tests/support/steering_axis_off.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -145,8 +146,7 @@ TEST(SuspensionKinematics, FrontToeGivesOpposedCorneringForces) {
   p.axles[0].kinematics.toe_rad = toe;
   // the hand formula is the trails' alone: without the steering-axis geometry and bore torque
   // (issue 15; their straight-ahead moments, opposite left/right, add toe compliance)
-  p.axles[0].caster_angle_rad = p.axles[0].kingpin_inclination_rad = p.axles[0].scrub_radius_m = 0;
-  p.axles[0].tire.tmeasy.bore.enabled = false;
+  test::without_steering_axis(p.axles[0]);
   VehicleModel m(p, 1e-3);
   m.set_forward_speed(20);
   Signals s = driver_inputs();

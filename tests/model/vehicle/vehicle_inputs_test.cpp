@@ -118,6 +118,8 @@ OverlayResult hold_wheel_with_overlay(double speed_mps) {
   // the gear's kinematics alone: without the bore torque's resistance at stand-still (issue 15),
   // which twists the torsion bar by a further F_rack i_SB / c
   for (AxleParams& a : p.axles) a.tire.tmeasy.bore.enabled = false;
+  // nor the built-in EPS's active return, which turns the pinion back against the overlay
+  p.steering.active_return = ActiveReturnParams{};
   VehicleModel m(p, 1e-3);
   const VehicleModel::Equilibrium e = m.settle(speed_mps, speed_mps > 0 ? 99 : 0);
   Signals s = test::all_driver_inputs();
@@ -138,9 +140,10 @@ OverlayResult hold_wheel_with_overlay(double speed_mps) {
 // Steady state: the rack sticks where (T_tb + T_a(T_tb)) / i_SB = F_rack + lambda, |lambda| <=
 // rack_friction_n (stick-predicted dry friction holds the rest), and
 // T_tb = c (delta_wheel - u / i_SB + overlay), so u = i_SB (overlay + delta_wheel - T_tb / c):
-// the overlay times i_SB less the torsion bar's twist that carries the tires' rack force and
-// the friction's hold (small, the assist carries most of it: T_tb <= i_SB (|F_rack| + F_c) /
-// (1 + G)) plus the robot's give (delta_wheel = -T_tb / k_robot).
+// the overlay times i_SB less the torsion bar's twist that carries the tires' rack force, the
+// friction's hold and the EPS's active return T_r, which pulls the pinion back towards the
+// centre at 2 and 10 m/s (small, the assist carries most of it: T_tb <= (i_SB (|F_rack| + F_c) +
+// |T_r|) / (1 + G)) plus the robot's give (delta_wheel = -T_tb / k_robot).
 TEST(SteeringOverlay, MovesTheRackByOverlayTimesRackRatioWithTheWheelHeld) {
   const VehicleParams p = sedan();
   const double c = p.steering.torsion_bar_stiffness_nmpr;
@@ -156,7 +159,12 @@ TEST(SteeringOverlay, MovesTheRackByOverlayTimesRackRatioWithTheWheelHeld) {
     const double f_c = p.steering.rack_friction_n;
     const double k_robot = p.steering.robot_stiffness_nmpr;
     EXPECT_LE(std::abs((o.tb_nm + o.assist_nm) / i_sb - o.rack_force_n), f_c * (1 + 1e-9));
-    const double tb_max_nm = i_sb * (std::abs(o.rack_force_n) + f_c) / (1 + p.steering.assist_gain);
+    // T_r: the EPS's torque less its boost curve's share at T_tb
+    const double return_nm =
+        o.assist_nm - p.steering.assist_max_nm *
+                          std::tanh(p.steering.assist_gain * o.tb_nm / p.steering.assist_max_nm);
+    const double tb_max_nm = (i_sb * (std::abs(o.rack_force_n) + f_c) + std::abs(return_nm)) /
+                             (1 + p.steering.assist_gain);
     EXPECT_NEAR(o.rack_m, o.expected_m, i_sb * tb_max_nm * (1 / c + 1 / k_robot));
     EXPECT_NEAR(o.rack_m - o.expected_m, twist_m, 1e-3 * o.expected_m);
   }

@@ -10,6 +10,7 @@
 #include <iterator>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -19,6 +20,7 @@
 #include "model/vehicle/vehicle_model.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
+#include "tests/support/step_steer.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -126,32 +128,26 @@ struct StepResult {
 
 StepResult step_steer(double h, double sw_angle_rad, const VehicleParams& params,
                       double speed_mps = 80 / 3.6) {
-  VehicleModel m(params, h);
-  Signals s = driver_inputs();
-  m.set_forward_speed(speed_mps);
   StepResult r;
-  double t_step = 1.0;
+  const double t_step = 1.0;
   double rmin = 1e9, rmax = -1e9;
   std::vector<double> yaw;
-  const long n = std::lround(6.0 / h);
-  for (long k = 0; k < n; ++k) {
-    const double t = m.time_s();
-    // ramp to the step in 0.1 s (ISO 7401: as fast as possible, < 0.15 s); throttle holds speed
-    s[Signal::kSteeringWheelAngleCmd] = sw_angle_rad * std::clamp((t - t_step) / 0.1, 0.0, 1.0);
-    s[Signal::kThrottlePedal] =
-        std::clamp(0.2 + 0.5 * (speed_mps - s[Signal::kVehicleSpeed]), 0.0, 1.0);
-    if (m.step(s) != StepStatus::kOk) {
-      r.yaw_rate_final = NAN;
-      return r;
-    }
+  const auto record = [&](double t, const VehicleModel& /*m*/, const Signals& s) {
     yaw.push_back(s[Signal::kYawRate]);
+    r.ay_final = s[Signal::kLateralAccel];
     if (t > 5.0) {
       rmin = std::min(rmin, s[Signal::kYawRate]);
       rmax = std::max(rmax, s[Signal::kYawRate]);
     }
+  };
+  // tests/support/step_steer.h: 6 s, the ramp from t_step, the throttle holding the speed
+  if (!test::run_step_steer(params, h,
+                            {.sw_rad = sw_angle_rad, .speed_mps = speed_mps, .t_step_s = t_step},
+                            record)) {
+    r.yaw_rate_final = NAN;
+    return r;
   }
   r.yaw_rate_final = yaw.back();
-  r.ay_final = s[Signal::kLateralAccel];
   r.yaw_rate_spread_end = rmax - rmin;
   for (std::size_t k = 0; k < yaw.size(); ++k) {
     r.yaw_rate_peak = std::max(r.yaw_rate_peak, yaw[k]);
@@ -313,7 +309,10 @@ TEST(Vehicle, AnalyticPartialJacobiansMatchFiniteDifferences) {
   // (a_y ~ 5 m/s^2) df/ds adds ~10 %, which the FD sees
   EXPECT_NEAR(az(1, 1), fz(1, 1), 0.15 * std::abs(fz(1, 1)));
   // steering: the analytic Jacobian is complete
-  auto& st = m.steering();
+  const auto block = m.steering_block();
+  SimpleSteering* const* simple = std::get_if<SimpleSteering*>(&block);
+  ASSERT_NE(simple, nullptr);  // the sedan's [steering] model is the simple one
+  SimpleSteering& st = **simple;
   Eigen::Matrix2d sy2, sz2;
   ASSERT_TRUE(st.force_jacobians(st.coordinates(), st.speeds(), sy2, sz2));
   Eigen::MatrixXd gy, gz;
