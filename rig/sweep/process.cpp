@@ -15,6 +15,7 @@ namespace rig::sweep {
 pid_t spawn(const std::vector<std::string>& argv, const std::filesystem::path& log_file,
             std::string& error, bool new_group) {
   std::vector<char*> args;
+  args.reserve(argv.size() + 1);
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
   posix_spawn_file_actions_t actions;

@@ -26,8 +26,8 @@ struct RunResult {
   std::string status = "missing";
   int exit_code = -1;  ///< -1: no status.json
   std::string stop_reason;
-  std::string started;  ///< the run's start, ISO 8601 (UTC)
-  double sim_time_s, wall_time_s;
+  std::string started;                         ///< the run's start, ISO 8601 (UTC)
+  double sim_time_s = 0.0, wall_time_s = 0.0;  ///< NaN when unknown (read_result)
   std::vector<kpi::KpiResult> kpis;
   std::string error;  ///< the last line of rig.log when the run did not end as asked
 };

@@ -24,7 +24,7 @@ class SweepError : public std::runtime_error {
 std::string describe(const SweepRun& r) {
   std::string d = r.maneuver;
   if (!r.road.empty()) d += ", road " + r.road;
-  for (const auto& [k, v] : r.vary) d += ", " + k + "=" + v;
+  for (const auto& [k, v] : r.vary) d.append(", ").append(k).append("=").append(v);
   if (r.seed) d += ", seed " + std::to_string(*r.seed);
   return d;
 }
@@ -37,7 +37,8 @@ void check_values(const SweepSpec& spec, const std::vector<SweepRun>& runs) {
   for (const SweepRun& r : runs) {
     std::vector<std::string> values{"m:" + r.config.string(), "r:" + r.road,
                                     "s:" + (r.seed ? std::to_string(*r.seed) : "")};
-    for (const auto& [k, v] : r.vary) values.push_back("v:" + k + "=" + v);
+    for (const auto& [k, v] : r.vary)
+      values.push_back(std::string("v:").append(k).append("=").append(v));
     bool fresh = false;
     for (const auto& v : values) fresh = seen.insert(v).second || fresh;
     if (!fresh) continue;

@@ -99,7 +99,7 @@ std::string run_slurm(const Plan& plan, int max_parallel) {
   std::string out;
   const int code = slurm_command({"sbatch", "--parsable", script.string()},
                                  plan.dir / "slurm" / "sbatch.out", out);
-  const std::string job = out.substr(0, out.find_first_not_of("0123456789"));
+  std::string job = out.substr(0, out.find_first_not_of("0123456789"));
   if (code != 0 || job.empty())
     throw std::runtime_error("sbatch failed (exit " + std::to_string(code) + "): " + out);
   std::cerr << "rig sweep: submitted job " << job << " (" << slurm_tasks(plan) << " array tasks, "
