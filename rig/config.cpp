@@ -82,16 +82,16 @@ RigSettings read_rig(io::config::StrictTable& t) {
   return s;
 }
 
-ModelSettings read_model(io::config::StrictTable& t) {
+ModelSettings read_model(io::config::StrictTable& t, const io::config::Overrides& overrides) {
   ModelSettings m;
   m.kind = t.choice("kind", "quarter-car", {"quarter-car", "vehicle", "combination"});
   if (m.kind == "vehicle") {  // vehicle file + road keys (rig/vehicle_config)
-    m.vehicle = io::config::read_vehicle_model(t);
+    m.vehicle = io::config::read_vehicle_model(t, overrides.of_file(1));
     t.finish();
     return m;
   }
   if (m.kind == "combination") {  // units, joints, road keys (rig/vehicle_config)
-    m.combination = io::config::read_combination_model(t);
+    m.combination = io::config::read_combination_model(t, &overrides);
     t.finish();
     return m;
   }
@@ -158,11 +158,25 @@ void read_driver(io::config::StrictTable& t, const RoutingRequests& requests,
   }
 }
 
-/// The inputs the configured driver can write.
+/// The inputs the configured driver and the events can write.
 io::InputSet driver_writes(const RigConfig& c) {
-  if (c.path_driver) return driver::path_driver_inputs();
-  if (c.driver) return driver::table_driver_inputs(*c.driver);
-  return {};
+  io::InputSet s = driver::event_inputs(c.events);
+  if (c.path_driver) s |= driver::path_driver_inputs();
+  if (c.driver) s |= driver::table_driver_inputs(*c.driver);
+  return s;
+}
+
+/// An event must not set an input [routing] gives to CAN (the ECU's value would be overwritten).
+void check_event_routes(const RigConfig& c, const RoutingRequests& requests,
+                        const RouteLocations& routes) {
+  for (const auto& e : c.events) {
+    for (const auto& set : e.set) {
+      if (requests[set.slot] == RouteRequest::kCan)
+        throw io::config::ConfigError(set.at + ": [[event]] '" + e.name + "' do.set " + set.name +
+                                      ": routed to CAN in [routing] (" + routes[set.slot].at +
+                                      "); an event sets inputs the driver side feeds");
+    }
+  }
 }
 
 /// Where each input routed to CAN is; without a [can] section such a route is an error (the
@@ -177,6 +191,14 @@ void locate_can_routes(const io::config::StrictTable& routing, const RoutingRequ
                                     "mapping receives it; add [can] or route it to \"driver\")");
     c.can_route_at[i] = routes[i];
   }
+}
+
+/// The units whose vehicle files a --set may name: 1 for a vehicle, the combination's count.
+void check_override_files(const io::config::Overrides& overrides, const ModelSettings& m) {
+  const int units = m.vehicle       ? 1
+                    : m.combination ? static_cast<int>(m.combination->units.size())
+                                    : 0;
+  overrides.check_files(units, m.combination.has_value());
 }
 
 }  // namespace
@@ -195,13 +217,15 @@ io::signals::ModelShape model_shape(const ModelSettings& model) {
   return shape;
 }
 
-RigConfig load_config(const std::filesystem::path& file) {
-  const toml::table doc = io::config::load_toml_file(file);
+RigConfig load_config(const std::filesystem::path& file, const io::config::Overrides& overrides) {
+  toml::table doc = io::config::load_toml_file(file);
+  io::config::apply_overrides(overrides.of_file(0), doc, file);
   io::config::StrictTable top(doc, file, "top level");
   RigConfig c;
   c.file = file;
   if (auto t = top.optional_table("rig")) c.rig = read_rig(*t);
-  if (auto t = top.optional_table("model")) c.model = read_model(*t);
+  if (auto t = top.optional_table("model")) c.model = read_model(*t, overrides);
+  check_override_files(overrides, c.model);
   read_road(top, c);
   c.catalogue = std::make_shared<const io::signals::Catalogue>(model_shape(c.model));
   // Routing before the driver: a table column must not be routed to CAN.
@@ -214,7 +238,10 @@ RigConfig load_config(const std::filesystem::path& file) {
     c.can = io::can::bridge::read_can_settings(*t, c.catalogue);
   if (routing) locate_can_routes(*routing, requests, routes, c);
   if (auto t = top.optional_table("lcm")) c.lcm = io::lcm::read_lcm_settings(*t, c.catalogue);
-  c.kpis = kpi::read_kpis(top, *c.catalogue);
+  c.events = driver::read_events(top, *c.catalogue);
+  check_event_routes(c, requests, routes);
+  const driver::PathDriverVehicle geometry = path_driver_vehicle(c.model);
+  c.kpis = kpi::read_kpis(top, *c.catalogue, {geometry.wheelbase_m, geometry.steering_ratio});
   top.finish();  // unknown top-level sections
   c.routing = resolve_routing(requests, driver_writes(c));
   return c;

@@ -12,11 +12,13 @@
 
 #include "io/can/bridge/can_settings.h"
 #include "io/config/combination_file.h"
+#include "io/config/overrides.h"
 #include "io/config/vehicle_file.h"
 #include "io/lcm/lcm_settings.h"
 #include "io/signals/catalogue.h"
 #include "model/paper/quarter_car_params.h"
 #include "rig/driver/path_driver.h"
+#include "rig/driver/scenario_events.h"
 #include "rig/driver/table_driver.h"
 #include "rig/kpi/kpi_spec.h"
 #include "rig/overrun_policy.h"
@@ -72,6 +74,8 @@ struct RigConfig {
   /// `file:line` and name of each [routing] entry `= "can"` ("" for the others), for errors
   /// found when the mapping is loaded (an input routed to CAN that no [[rx]] signal receives).
   RouteLocations can_route_at{};
+  /// [[event]]: conditions and what they do (rig/driver/scenario_events.h, docs/scenarios.md).
+  std::vector<driver::EventSpec> events;
   /// [[kpi]]: what the run measures for the summary's `kpis` (rig/kpi, docs/kpis.md).
   std::vector<kpi::KpiSpec> kpis;
 };
@@ -80,7 +84,10 @@ struct RigConfig {
 /// or the quarter car's one unit of one axle.
 io::signals::ModelShape model_shape(const ModelSettings& model);
 
-/// Loads and validates a configuration file. Throws ConfigError("file:line: ...").
-RigConfig load_config(const std::filesystem::path& file);
+/// Loads and validates a configuration file, with `overrides` (--set KEY=VALUE,
+/// io/config/overrides.h) put into it and the vehicle files it names. Throws
+/// ConfigError("file:line: ..." or "--set KEY=VALUE: ...").
+RigConfig load_config(const std::filesystem::path& file,
+                      const io::config::Overrides& overrides = {});
 
 }  // namespace rig

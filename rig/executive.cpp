@@ -74,6 +74,8 @@ const char* stop_reason_name(StopReason reason) {
       return "vehicle-fault";
     case StopReason::kRtRefused:
       return "rt-refused";
+    case StopReason::kEvent:
+      return "event";
   }
   return "?";
 }
@@ -138,6 +140,7 @@ std::int64_t Executive::elapsed_ns(const LoopState& loop) const noexcept {
 
 StopReason Executive::run_loop() {
   start_ns_ = clock_.now_ns();
+  fill_report();  // the initial state: what the first cycle's events see as the last step
   LoopState loop{start_ns_ + period_ns_, 0};
   const std::int64_t duration_ns = to_ns(params_.duration_s);
   StopReason reason = StopReason::kNone;
@@ -173,6 +176,7 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
   log_io_events(t.wake_ns);
   phases.end(io::Phase::kInputs);
   if (driver_ != nullptr) driver_->update(model_.time_s(), signals_);
+  const bool event_stop = events_ != nullptr && run_events();
   phases.end(io::Phase::kDriver);
   if (params_.stall_ms > 0 && loop.cycle == params_.stall_cycle) sleep_ms(params_.stall_ms);
   const model::StepStatus status = step_model();
@@ -194,7 +198,25 @@ StopReason Executive::cycle(LoopState& loop) noexcept {
   if (status != model::StepStatus::kOk) {
     if (const StopReason r = after_fault(status, t, end_ns); r != StopReason::kNone) return r;
   }
-  return decision.action == OverrunAction::kAbort ? StopReason::kAbortAfter : StopReason::kNone;
+  if (decision.action == OverrunAction::kAbort) return StopReason::kAbortAfter;
+  return event_stop ? StopReason::kEvent : StopReason::kNone;
+}
+
+/// The scenario events after the driver, on the last step's outputs; each one fired is logged
+/// (the log is a ring: no I/O here). True if one asked to stop.
+bool Executive::run_events() noexcept {
+  const double t_s = model_.time_s();
+  const bool stop = events_->update(t_s, io::signals::CycleView{signals_, report_}, signals_);
+  for (const std::size_t i : events_->fired()) {
+    const driver::EventSpec& e = events_->specs()[i];
+    char detail[320];
+    std::snprintf(detail, sizeof detail, "'%s' at t = %.6f s: %s %s %g held %g s; %s",
+                  e.name.c_str(), t_s, e.when.signal_name.c_str(),
+                  driver::compare_op_name(e.when.op), e.when.value, e.when.for_s,
+                  e.stop ? "stop" : "set");
+    log_.event(clock_.realtime_ns(), clock_.now_ns(), "scenario_event", detail);
+  }
+  return stop;
 }
 
 /// Lock-step: waits for a received cycle frame (the adapters that have cycle frames). The wait

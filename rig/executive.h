@@ -20,6 +20,7 @@
 #include "model/stepped_model.h"
 #include "rig/dispatcher.h"
 #include "rig/driver/driver.h"
+#include "rig/driver/scenario_events.h"
 #include "rig/event_log.h"
 #include "rig/overrun_policy.h"
 #include "rig/phase_timer.h"
@@ -61,7 +62,8 @@ enum class StopReason {
   kAbortAfter,
   kNonFinite,
   kVehicleFault,
-  kRtRefused
+  kRtRefused,
+  kEvent  ///< a scenario event's do = "stop" (rig/driver/scenario_events.h)
 };
 const char* stop_reason_name(StopReason reason);
 
@@ -118,6 +120,8 @@ class Executive {
   void wait_finished(std::int64_t timeout_ns) noexcept;
 
   void set_hook(CycleHook* hook) noexcept { hook_ = hook; }
+  /// The scenario events, run at the driver stage after the driver (null: none). Before go().
+  void set_events(driver::EventStage* events) noexcept { events_ = events; }
 
   /// Drains the snapshot ring into the sinks on the calling thread; returns how many.
   std::size_t drain_snapshots() { return dispatcher_.drain_snapshots(); }
@@ -169,6 +173,7 @@ class Executive {
   model::StepStatus step_model() noexcept;
   void fill_report() noexcept;
   void log_io_events(std::int64_t now_ns) noexcept;
+  bool run_events() noexcept;
   void wait_lockstep(LoopState& loop, io::CycleTiming& t, std::int64_t io_ns) noexcept;
   [[nodiscard]] std::int64_t elapsed_ns(const LoopState& loop) const noexcept;
   void note_cycle_frames(std::uint64_t cycle, std::int64_t now_ns) noexcept;
@@ -192,6 +197,7 @@ class Executive {
   std::vector<io::CycleIo*> io_;
   EventLog& log_;
   CycleHook* hook_ = nullptr;
+  driver::EventStage* events_ = nullptr;
 
   model::Signals signals_{};
   /// The cycle's report, filled after the step: what the adapters transmit from (catalogue

@@ -20,6 +20,7 @@
 #include "rig/run.h"
 #include "rig/signals.h"
 #include "rig/signals_command.h"
+#include "rig/sweep/sweep_command.h"
 
 namespace {
 
@@ -60,6 +61,17 @@ CLI::Validator cpu_validator() {
 void add_run(CLI::App& app, rig::RunOptions& run, std::string& stall) {
   auto* run_cmd = app.add_subcommand("run", "run the simulator loop");
   run_cmd->add_option("--config", run.config_file, "configuration file (TOML)")->required();
+  run_cmd
+      ->add_option("--set", run.sets,
+                   "KEY=VALUE: set a configuration key before it is read, also of the vehicle "
+                   "file (vehicle.chassis.mass_kg=1600; unit<k>. for a combination's units); "
+                   "repeatable (docs/sweeps.md)")
+      ->allow_extra_args(false);
+  run_cmd->add_option("--junit", run.junit,
+                      "write the KPIs as JUnit XML to FILE (one <testsuite>, one <testcase> per "
+                      "KPI)");
+  run_cmd->add_flag("--fail-on-kpi", run.fail_on_kpi,
+                    "exit 3 if a KPI failed its limits (a run failure stays exit 1)");
   run_cmd->add_option("--duration", run.duration_s,
                       "stop after S seconds (default: [rig] duration_s or forever); finite, at "
                       "least one period");
@@ -121,6 +133,32 @@ const CLI::App* add_road(CLI::App& app, std::string& config, std::string& points
   return sample_cmd;
 }
 
+/// `rig sweep SPEC [--workers N] [--out DIR] [--slurm] ...`.
+const CLI::App* add_sweep(CLI::App& app, rig::sweep::SweepOptions& o) {
+  auto* cmd = app.add_subcommand(
+      "sweep",
+      "run a campaign: SPEC's matrix of runs (base or maneuvers, [[roads]], [[vary]] key/values, "
+      "seeds) offline, locally or as a Slurm job array; DIR/runs/<id>/, DIR/campaign.csv, "
+      "DIR/junit.xml, DIR/plots/ (docs/sweeps.md)");
+  cmd->add_option("SPEC", o.spec, "sweep specification (TOML)")->required();
+  cmd->add_option("--workers", o.workers,
+                  "local worker processes (default: the CPUs); with --slurm the most array "
+                  "tasks running at once (default: no limit)")
+      ->check(CLI::Range(1, 4096));
+  cmd->add_option("--out", o.out, "output folder (default out/sweep-NAME); must not hold a sweep");
+  cmd->add_flag("--slurm", o.slurm,
+                "submit the runs as a Slurm job array (sbatch) and collect when it ends");
+  cmd->add_flag("--keep-logs", o.keep_logs,
+                "keep each run's LCM log, overrun log, CSVs and figures (else summary and KPIs)");
+  cmd->add_flag("--fail-on-kpi", o.fail_on_kpi, "exit 3 if a run's KPI failed");
+  cmd->add_flag("--no-plots", o.no_plots, "no summary plots");
+  cmd->add_flag("--collect", o.collect, "only gather DIR's results again (campaign.csv, ...)");
+  cmd->add_option("--task", o.task,
+                  "run array task I of DIR's plan (what the sbatch script runs; needs --out)")
+      ->needs(cmd->get_option("--out"));
+  return cmd;
+}
+
 /// --inject-stall CYCLE:MS into `run`.
 void parse_stall(const std::string& stall, rig::RunOptions& run) {
   if (stall.empty()) return;
@@ -150,6 +188,8 @@ int main(int argc, char** argv) {
   std::string road_config;
   std::string road_points;
   const CLI::App* road_sample_cmd = add_road(app, road_config, road_points);
+  rig::sweep::SweepOptions sweep;
+  const CLI::App* sweep_cmd = add_sweep(app, sweep);
 
   try {
     app.parse(argc, argv);
@@ -165,5 +205,6 @@ int main(int argc, char** argv) {
   if (*signals_cmd) return rig::signals_command(signals_config, signals_json, std::cout, std::cerr);
   if (*road_sample_cmd)
     return rig::road_sample_command(road_config, road_points, std::cout, std::cerr);
+  if (*sweep_cmd) return rig::sweep::sweep_command(sweep);
   return rig::run(run);
 }

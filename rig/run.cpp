@@ -26,6 +26,7 @@ int run(const RunOptions& options) {
   const std::int64_t wall_start_ns = wall.now_ns();
   Executive exec(parts.params, loop_clock, *parts.model, parts.driver.get(), parts.io_adapters(),
                  parts.snapshot_sinks(), *parts.log, parts.config.routing.source);
+  exec.set_events(parts.events.get());
   set_signal_target(&exec);  // a stop signal during assembly stops it before its first cycle
 
   rt::CpuDmaLatency dma_latency;  // held for the whole real-time run
@@ -46,7 +47,9 @@ int run(const RunOptions& options) {
                       wall_start_ns,
                       {sinks.begin(), sinks.end()},
                       parts.summary.get(),
-                      parts.kpis.get()};
+                      parts.kpis.get(),
+                      parts.events.get(),
+                      parts.junit.get()};
   return finish_run(exec, *parts.log, finish, options, notifier, wall);
 }
 

@@ -62,21 +62,30 @@ std::vector<std::filesystem::path> input_files(const RigConfig& c) {
   return in;
 }
 
+/// An output written at the end (null if not asked for), created now.
+std::unique_ptr<std::FILE, FileCloser> open_file(const char* option, const std::string& path,
+                                                 int keep) {
+  if (path.empty()) return nullptr;
+  const int fd = io::log::open_output_file({option, path}, keep);
+  std::unique_ptr<std::FILE, FileCloser> f(::fdopen(fd, "w"));
+  if (!f) throw io::log::OutputFileError(std::string(option) + ": fdopen failed");
+  return f;
+}
+
 /// The outputs, last: an earlier run's files are rotated only when everything else loaded.
 void open_outputs(const RunOptions& options, RunParts& parts) {
   const int keep = parts.config.rig.keep_logs;
   io::log::check_output_paths({{"--overrun-log", options.overrun_log},
                                {"--lcm-log", options.lcm_log},
-                               {"--summary-json", options.summary_json}},
+                               {"--summary-json", options.summary_json},
+                               {"--junit", options.junit}},
                               input_files(parts.config));
   parts.sinks = make_sinks(parts.config, options);
   if (!parts.config.kpis.empty())
     parts.kpis = std::make_unique<kpi::KpiRecorder>(parts.config.kpis);
   parts.log = std::make_unique<EventLog>(options.overrun_log, 4096, keep);
-  if (options.summary_json.empty()) return;
-  const int fd = io::log::open_output_file({"--summary-json", options.summary_json}, keep);
-  parts.summary.reset(::fdopen(fd, "w"));
-  if (!parts.summary) throw io::log::OutputFileError("--summary-json: fdopen failed");
+  parts.summary = open_file("--summary-json", options.summary_json, keep);
+  parts.junit = open_file("--junit", options.junit, keep);
 }
 
 }  // namespace
@@ -110,11 +119,13 @@ ExecutiveParams executive_params(const RigConfig& config, const RunOptions& opti
 
 int assemble(const RunOptions& options, RunParts& parts) {
   try {
-    parts.config = load_config(options.config_file);
+    parts.config = load_config(options.config_file, io::config::Overrides(options.sets));
     check_duration(options, parts.config);
     parts.io = make_io(parts.config, options);
     parts.model = make_model(parts.config);
     parts.driver = make_driver(parts.config);
+    if (!parts.config.events.empty())
+      parts.events = std::make_unique<driver::EventStage>(parts.config.events);
     open_outputs(options, parts);
   } catch (const io::config::ConfigError& e) {
     std::cerr << e.what() << "\n";

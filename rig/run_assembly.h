@@ -31,11 +31,15 @@ struct RunParts {
   std::vector<std::unique_ptr<io::SnapshotSink>> sinks;
   std::unique_ptr<model::SteppedModel> model;
   std::unique_ptr<driver::Driver> driver;
+  /// [[event]]: run at the driver stage after the driver; null without [[event]].
+  std::unique_ptr<driver::EventStage> events;
   std::unique_ptr<EventLog> log;
   /// [[kpi]]: records their signals (the last snapshot sink); null without [[kpi]].
   std::unique_ptr<kpi::KpiRecorder> kpis;
   /// --summary-json, created before the loop starts (written at the end); null if none.
   std::unique_ptr<std::FILE, FileCloser> summary;
+  /// --junit, likewise.
+  std::unique_ptr<std::FILE, FileCloser> junit;
 
   [[nodiscard]] std::vector<io::CycleIo*> io_adapters() const;
   [[nodiscard]] std::vector<io::SnapshotSink*> snapshot_sinks() const;

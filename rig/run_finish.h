@@ -17,8 +17,10 @@
 
 namespace rig {
 
-/// The run ended as asked, but an output lost data: a write failed (a full disk, an I/O error).
+/// The run ended as asked, but an output lost data: a write failed (a full disk, an I/O error);
+/// or, with --fail-on-kpi, a KPI failed its limits.
 inline constexpr int kExitOutputLost = 3;
+inline constexpr int kExitKpiFailed = 3;
 
 struct FinishInputs {
   StopReason reason = StopReason::kNone;
@@ -27,11 +29,14 @@ struct FinishInputs {
   std::vector<const io::SnapshotSink*> sinks;  ///< stopped: their write failures are final
   std::FILE* summary = nullptr;                ///< --summary-json, opened before the loop
   const kpi::KpiRecorder* kpis = nullptr;      ///< [[kpi]] (stopped), null if none
+  const driver::EventStage* events = nullptr;  ///< [[event]], null if none
+  std::FILE* junit = nullptr;                  ///< --junit, opened before the loop
 };
 
 /// Returns the exit code: 0; 1 (abort-after, non-finite model, a vehicle fault stopped or held);
 /// else kExitOutputLost if any output failed to write (each failure: an event in the overrun
-/// log if that still works, one stderr line, the summary's `write_failures`).
+/// log if that still works, one stderr line, the summary's `write_failures`); else, with
+/// --fail-on-kpi, kExitKpiFailed if a KPI failed (each one named on stderr in any case).
 int finish_run(const Executive& exec, EventLog& log, const FinishInputs& in,
                const RunOptions& options, io::systemd::SystemdNotifier& notifier, rt::Clock& wall);
 

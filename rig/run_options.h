@@ -5,11 +5,16 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rig {
 
 struct RunOptions {
   std::string config_file;
+  /// --set KEY=VALUE, in order (io/config/overrides.h: the key path scheme).
+  std::vector<std::string> sets;
+  std::string junit;         ///< --junit FILE ("" = none): the KPIs as JUnit XML
+  bool fail_on_kpi = false;  ///< --fail-on-kpi: a failed KPI exits 3
   std::optional<double> duration_s;  ///< overrides [rig] duration_s
   bool offline = false;
   std::string can = "";         ///< --can IFACE|none ("" = as configured)

@@ -86,6 +86,16 @@ std::string write_failures_json(const std::vector<io::WriteFailures>& failures) 
   return j + "]";
 }
 
+/// [{"name": "brake", "time_s": 3.215}, {"name": "stop", "time_s": null}]
+std::string scenario_events_json(const std::vector<std::pair<std::string, double>>& events) {
+  std::string j = "[";
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    j += std::string(i == 0 ? "" : ", ") + "{\"name\": " + json_string(events[i].first) +
+         ", \"time_s\": " + json_number(events[i].second, "%.6f") + "}";
+  }
+  return j + "]";
+}
+
 }  // namespace
 
 std::string summary_line(const Executive& e) {
@@ -175,6 +185,11 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
          ",\n";
   }
   j += "  \"kpis\": " + kpi::kpis_json(x.kpis) + ",\n";
+  j += "  \"scenario_events\": " + scenario_events_json(x.scenario_events) + ",\n";
+  j += "  \"config\": " + json_string(x.config_file) + ",\n  \"set\": [";
+  for (std::size_t i = 0; i < x.sets.size(); ++i)
+    j += (i == 0 ? "" : ", ") + json_string(x.sets[i]);
+  j += "],\n";
   j += "  \"write_failures\": " + write_failures_json(x.write_failures) + ",\n";
   j += "  \"stop_reason\": " + json_string(x.stop_reason) + ",\n";
   j += fmt("  \"exit_code\": %d\n}\n", x.exit_code);

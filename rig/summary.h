@@ -4,6 +4,7 @@
 /// the --summary-json document.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/snapshot_sink.h"
@@ -20,6 +21,10 @@ struct SummaryExtras {
   std::uint64_t events_lost = 0;
   std::vector<io::WriteFailures> write_failures;  ///< outputs that lost data (a full disk)
   std::vector<kpi::KpiResult> kpis;               ///< [[kpi]] of the configuration (rig/kpi)
+  /// [[event]]: each event's name and when it fired [s] (NaN: never; null in JSON).
+  std::vector<std::pair<std::string, double>> scenario_events;
+  std::string config_file;        ///< --config
+  std::vector<std::string> sets;  ///< --set KEY=VALUE, in order
 };
 
 /// The status line (rig/status_line.h) of the executive's figures so far.

@@ -7,7 +7,7 @@
 
 namespace rig::io::config {
 
-CombinationModelSettings read_combination_model(StrictTable& m) {
+CombinationModelSettings read_combination_model(StrictTable& m, const Overrides* overrides) {
   using model::combination::JointKind;
   using model::combination::JointParams;
   CombinationModelSettings c;
@@ -16,7 +16,9 @@ CombinationModelSettings read_combination_model(StrictTable& m) {
   c.parallel = m.boolean("parallel", false);
   for (auto& u : m.tables("unit", model::kMaxUnits)) {
     c.unit_files.push_back(u.existing_path("vehicle"));
-    c.units.push_back(load_vehicle_file(c.unit_files.back()));
+    const int unit = static_cast<int>(c.units.size()) + 1;  // unit<k>, k from 1
+    c.units.push_back(load_vehicle_file(
+        c.unit_files.back(), overrides ? overrides->of_file(unit) : std::vector<Override>{}));
     c.units.back().road = road;
     u.finish();
   }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "io/config/overrides.h"
 #include "io/config/strict_table.h"
 #include "model/combination/joint.h"
 #include "model/vehicle/vehicle_params.h"
@@ -26,7 +27,9 @@ struct CombinationModelSettings {
   double initial_speed_mps = 0;
 };
 
-/// Reads the combination keys from [model] (the caller has read `kind`).
-CombinationModelSettings read_combination_model(StrictTable& model_table);
+/// Reads the combination keys from [model] (the caller has read `kind`); `overrides`: --set of
+/// the units' vehicle files (unit<k>.KEY=VALUE), none if null.
+CombinationModelSettings read_combination_model(StrictTable& model_table,
+                                                const Overrides* overrides = nullptr);
 
 }  // namespace rig::io::config

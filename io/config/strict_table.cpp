@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "io/config/input_file.h"
+#include "io/config/overrides.h"
 
 namespace rig::io::config {
 
@@ -22,6 +23,8 @@ StrictTable::StrictTable(const toml::table& table, std::filesystem::path file, s
     : table_(&table), file_(std::move(file)), context_(std::move(context)) {}
 
 std::string StrictTable::where(const toml::source_region& region) const {
+  // a value put in by --set KEY=VALUE (io/config/overrides.h) is named by it
+  if (region.path && is_override_source(*region.path)) return *region.path;
   const auto line = region.begin.line > 0 ? region.begin.line : 1;
   return file_.string() + ":" + std::to_string(line);
 }

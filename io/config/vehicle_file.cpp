@@ -388,27 +388,31 @@ void check_axle_order(std::vector<StrictTable>& tables, const std::vector<AxlePa
   }
 }
 
+/// [chassis].
+void read_chassis(StrictTable c, model::vehicle::ChassisParams& chassis) {
+  chassis.mass_kg = c.number_in("mass_kg", 1, 1e6);
+  chassis.inertia_kgm2 = {c.number_in("inertia_xx_kgm2", 1e-3, 1e8),
+                          c.number_in("inertia_yy_kgm2", 1e-3, 1e8),
+                          c.number_in("inertia_zz_kgm2", 1e-3, 1e8)};
+  chassis.inertia_xz_kgm2 = c.number_in("inertia_xz_kgm2", 0, -1e7, 1e7);
+  check_inertia(c, chassis.inertia_kgm2, chassis.inertia_xz_kgm2);
+  chassis.cg_height_m = c.number_in("cg_height_m", 0.05, 5);
+  chassis.drag_area_m2 = c.number_in("drag_area_m2", 0, 50);
+  chassis.air_density_kgpm3 = c.number_in("air_density_kgpm3", 1.2, 0, 2);
+  if (c.has("body_points_m")) chassis.body_points_m = read_body_points(c);
+  c.finish();
+}
+
 }  // namespace
 
-VehicleParams load_vehicle_file(const std::filesystem::path& file) {
-  const toml::table root = load_toml_file(file);
+VehicleParams load_vehicle_file(const std::filesystem::path& file,
+                                const std::vector<Override>& patch) {
+  toml::table root = load_toml_file(file);
+  apply_overrides(patch, root, file);
   StrictTable t(root, file, "vehicle");
   VehicleParams p;
   p.name = t.string("name");
-  {
-    StrictTable c = t.table("chassis");
-    p.chassis.mass_kg = c.number_in("mass_kg", 1, 1e6);
-    p.chassis.inertia_kgm2 = {c.number_in("inertia_xx_kgm2", 1e-3, 1e8),
-                              c.number_in("inertia_yy_kgm2", 1e-3, 1e8),
-                              c.number_in("inertia_zz_kgm2", 1e-3, 1e8)};
-    p.chassis.inertia_xz_kgm2 = c.number_in("inertia_xz_kgm2", 0, -1e7, 1e7);
-    check_inertia(c, p.chassis.inertia_kgm2, p.chassis.inertia_xz_kgm2);
-    p.chassis.cg_height_m = c.number_in("cg_height_m", 0.05, 5);
-    p.chassis.drag_area_m2 = c.number_in("drag_area_m2", 0, 50);
-    p.chassis.air_density_kgpm3 = c.number_in("air_density_kgpm3", 1.2, 0, 2);
-    if (c.has("body_points_m")) p.chassis.body_points_m = read_body_points(c);
-    c.finish();
-  }
+  read_chassis(t.table("chassis"), p.chassis);
   std::map<std::string, TireParams> tires;
   {
     StrictTable tt = t.table("tires");
@@ -464,10 +468,10 @@ model::road::RoadParams read_road(StrictTable& m) {
   return r;
 }
 
-VehicleModelSettings read_vehicle_model(StrictTable& m) {
+VehicleModelSettings read_vehicle_model(StrictTable& m, const std::vector<Override>& patch) {
   VehicleModelSettings v;
   v.file = m.existing_path("vehicle");
-  v.params = load_vehicle_file(v.file);
+  v.params = load_vehicle_file(v.file, patch);
   // Alone on its axles (not in a combination) a vehicle stands only if its CG (x = 0) lies
   // between the first and the last axle.
   const auto& axles = v.params.axles;

@@ -6,13 +6,18 @@
 
 #include <filesystem>
 
+#include <vector>
+
+#include "io/config/overrides.h"
 #include "io/config/strict_table.h"
 #include "model/vehicle/vehicle_params.h"
 
 namespace rig::io::config {
 
-/// Reads a whole vehicle file.
-model::vehicle::VehicleParams load_vehicle_file(const std::filesystem::path& file);
+/// Reads a whole vehicle file, with `patch` (--set KEY=VALUE of this file, io/config/overrides.h)
+/// put into it first.
+model::vehicle::VehicleParams load_vehicle_file(const std::filesystem::path& file,
+                                                const std::vector<Override>& patch = {});
 
 /// Reads the road keys (road_grade, road_bank, road_friction, road_friction_right for split mu)
 /// of a maneuver's [model] table; absent keys keep the defaults (flat, dry).
@@ -32,6 +37,8 @@ struct VehicleModelSettings {
 };
 
 /// Reads the vehicle keys from [model] (the caller has read `kind`); leaves finish() to the caller.
-VehicleModelSettings read_vehicle_model(StrictTable& model_table);
+/// `patch`: the --set overrides of the vehicle file.
+VehicleModelSettings read_vehicle_model(StrictTable& model_table,
+                                        const std::vector<Override>& patch = {});
 
 }  // namespace rig::io::config

@@ -1,29 +1,58 @@
 #include "rig/kpi/kpi_recorder.h"
 
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "rig/json_text.h"
 #include "rig/kpi/steering_kpis.h"
+#include "rig/kpi/step_response_kpis.h"
 
 namespace rig::kpi {
 
-KpiResult evaluate(const KpiSpec& spec, const Series& s) {
-  KpiResult r{spec.name, spec.unit, 0.0, spec.min, spec.max, false};
+namespace {
+
+/// The value of one KPI kind over its series (NaN: no answer).
+double value_of(const KpiSpec& spec, const Series& s) {
   switch (spec.kind) {
     case KpiKind::kPeakAbs:
-      r.value = peak_abs(s.y);
-      break;
+      return peak_abs(s.y);
     case KpiKind::kLoopWidth:
-      r.value = loop_width(s.x, s.y, spec.at);
-      break;
+      return loop_width(s.x, s.y, spec.at);
     case KpiKind::kGradient:
-      r.value = gradient(s.x, s.y, spec.at, spec.band);
-      break;
+      return gradient(s.x, s.y, spec.at, spec.band);
     case KpiKind::kResidualFraction:
-      r.value = residual_fraction(s.time_s, s.y, spec.from_s, spec.to_s);
-      break;
+      return residual_fraction(s.time_s, s.y, spec.from_s, spec.to_s);
+    case KpiKind::kResponseTime:
+      return step_response(s.time_s, s.y, s.x, spec.steady_s, spec.fraction).response_time_s;
+    case KpiKind::kPeakResponseTime:
+      return step_response(s.time_s, s.y, s.x, spec.steady_s, 0.9).peak_response_time_s;
+    case KpiKind::kOvershoot:
+      return step_response(s.time_s, s.y, s.x, spec.steady_s, 0.9).overshoot;
+    case KpiKind::kSteadyGain:
+      return step_response(s.time_s, s.y, s.x, spec.steady_s, 0.9).steady_gain;
+    case KpiKind::kUndersteerGradient:
+      return understeer_gradient(s.time_s, s.y, s.x, s.aux, spec.circle);
+    case KpiKind::kBrakingDistance:
+    case KpiKind::kMeanDeceleration: {
+      const auto from = brake_point(s.x, spec.threshold, s.y.size());
+      if (!from) return std::numeric_limits<double>::quiet_NaN();
+      return spec.kind == KpiKind::kBrakingDistance
+                 ? braking_distance(s.time_s, s.y, *from, spec.stop_mps)
+                 : mean_deceleration(s.time_s, s.y, *from);
+    }
+    case KpiKind::kLanesKept:
+      return lanes_kept(spec.track, s.x, s.y, s.aux);
+    case KpiKind::kConesHit:
+      return cones_hit(spec.track, s.x, s.y, s.aux);
   }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
+KpiResult evaluate(const KpiSpec& spec, const Series& s) {
+  KpiResult r{spec.name, spec.unit, value_of(spec, s), spec.min, spec.max, false};
   r.passed =
       std::isfinite(r.value) && (!r.min || r.value >= *r.min) && (!r.max || r.value <= *r.max);
   return r;
@@ -59,8 +88,8 @@ void KpiRecorder::consume(const io::Snapshot& snapshot, std::uint64_t /*dropped_
     Series& s = series_[k];
     s.time_s.push_back(t);
     s.y.push_back(spec.signal.value(view));
-    if (spec.kind == KpiKind::kLoopWidth || spec.kind == KpiKind::kGradient)
-      s.x.push_back(spec.versus.value(view));
+    if (spec.records_versus) s.x.push_back(spec.versus.value(view));
+    if (spec.records_aux) s.aux.push_back(spec.aux.value(view));
   }
 }
 

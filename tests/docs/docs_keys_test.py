@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Every configuration key the rig reads for [can], the CAN mapping, [lcm] and [[kpi]] is in the guide.
+"""Every configuration key the rig reads for [can], the CAN mapping, [lcm], [[kpi]], [[event]] and
+the sweep specification is in the guide.
 
 Greps the key names out of the sources (the first string argument of each StrictTable reader,
 `error` and `location` call, and the values of each `choice`) and fails on any that the guide
@@ -22,6 +23,8 @@ ROOMS = {
     "io/can": ["can.md", "e2e.md", "restbus.md", "signals.md"],
     "io/lcm": ["lcm.md"],
     "rig/kpi": ["kpis.md"],
+    "rig/driver/scenario_events.cpp": ["scenarios.md"],
+    "rig/sweep/sweep_spec.cpp": ["sweeps.md"],
 }
 # sections of the run configuration (rig/config.cpp) -> their page
 SECTIONS = {"can": "can.md", "lcm": "lcm.md", "routing": "routing.md"}
@@ -44,7 +47,8 @@ def missing_keys(root: pathlib.Path) -> list[str]:
     problems = []
     for folder, pages in ROOMS.items():
         named = documented(docs, pages)
-        for src in sorted((root / folder).rglob("*.cpp")):
+        place = root / folder
+        for src in [place] if place.is_file() else sorted(place.rglob("*.cpp")):
             for key in sorted(keys_in(src.read_text())):
                 # `key`, `"key"`, `key = ...`, `[key]`, `[[key]]`, `[[rx.key]]` all name it
                 if not any(re.fullmatch(r"\[*(\w+\.)?\"?%s\"?\]*( = .*)?" % re.escape(key), n)
@@ -59,7 +63,7 @@ def missing_keys(root: pathlib.Path) -> list[str]:
             problems.append(f"docs/{page} does not name the section `[{section}]`")
     index = (docs / "README.md").read_text()
     for page in ["can.md", "lcm.md", "routing.md", "signals.md", "restbus.md", "e2e.md",
-                 "worked-example.md", "kpis.md"]:
+                 "worked-example.md", "kpis.md", "scenarios.md", "sweeps.md"]:
         if f"({page})" not in index:
             problems.append(f"docs/README.md does not link {page}")
     if "docs/README.md" not in (root / "README.md").read_text():

@@ -28,7 +28,8 @@ import rig_checks  # noqa: E402
 
 RIG, LOG2CSV, SRC, NAME = sys.argv[1:5]
 COLUMNS = ("sim_time_s", "unit0_", "unit1_", "wheel0_", "wheel1_", "wheel2_", "wheel3_", "wheel4_",
-           "wheel5_", "steering_", "gear", "num_", "joint0_", "rack_", "torsion_bar_", "tie_rod_")
+           "wheel5_", "steering_", "gear", "num_", "joint0_", "rack_", "torsion_bar_", "tie_rod_",
+           "brake_pressure_")
 TMP = tempfile.mkdtemp(prefix=f"rig_maneuver_{NAME}_")
 # Configurations that run until stopped get a duration here.
 DURATION_S = {"bench": "5"}
@@ -47,20 +48,21 @@ def config_path(name):
     return os.path.join(SRC, "config", "maneuvers", name + ".toml")
 
 
-def run_offline(config):
+def run_offline(config, extra=()):
     r = subprocess.run([RIG, "check", config], capture_output=True, text=True, timeout=30)
     if r.returncode != 0:
         fail(f"rig check: exit {r.returncode}: {r.stdout}{r.stderr}")
     log, summary = f"{TMP}/run.lcm", f"{TMP}/summary.json"
     duration = ["--duration", DURATION_S[NAME]] if NAME in DURATION_S else []
     r = subprocess.run([RIG, "run", "--config", config, "--offline", "--can", "none", "--lcm-url",
-                        "none", "--lcm-log", log, "--summary-json", summary] + duration,
+                        "none", "--lcm-log", log, "--summary-json", summary] + duration + list(extra),
                        capture_output=True, text=True, timeout=120)
     if r.returncode != 0:
         fail(f"rig run: exit {r.returncode}: {r.stderr[-2000:]}")
     STDERR.append(r.stderr)
     s = json.load(open(summary))
-    check(s["stop_reason"] == "duration", f"stop reason {s['stop_reason']} (no NaN stop)")
+    # a scenario's stop event ends it early (config/maneuvers/braking-100-0.toml)
+    check(s["stop_reason"] in ("duration", "event"), f"stop reason {s['stop_reason']} (no NaN stop)")
     r = subprocess.run([LOG2CSV, log, f"{TMP}/csv"], capture_output=True, text=True, timeout=120)
     if r.returncode != 0:
         fail(f"rig-log2csv: {r.stderr}")
@@ -168,6 +170,66 @@ def case_bench(s, rows):
 
 def case_double_lane_change_iso3888(s, rows):
     check_dlc(rows, 30.0, 16.67)
+    k = kpis_of(s)
+    kept, hit = iso3888_lanes_and_cones(rows, 30.0, 3.5, 1.8, 4.7, 2.1, 5.0, 0.15)
+    print(f"ISO 3888-1 from the log: lanes kept {kept}, cones hit {hit}; kpis "
+          f"{k['lanes_kept']['value']}, {k['cones_hit']['value']}")
+    check(k["lanes_kept"]["value"] == kept and k["cones_hit"]["value"] == hit,
+          "kpis lanes_kept and cones_hit = this test's ISO 3888-1 outline check of the log")
+    check(k["lanes_kept"]["passed"] and k["cones_hit"]["passed"], "the sedan keeps the lanes")
+    # lane 3 put 0.5 m to the right of the driver's (--set, lane_offset_m = 3.0): it is lost and
+    # its left cones are hit; the same counts as this test's
+    sets = ["kpi[0].lane_offset_m=3.0", "kpi[1].lane_offset_m=3.0"]
+    s2, rows2 = run_offline(config_path(NAME), [a for x in sets for a in ("--set", x)])
+    k2 = kpis_of(s2)
+    kept2, hit2 = iso3888_lanes_and_cones(rows2, 30.0, 3.0, 1.8, 4.7, 2.1, 5.0, 0.15)
+    print(f"lane 3 offset 3.0 m: lanes kept {kept2}, cones hit {hit2} (log); kpis "
+          f"{k2['lanes_kept']['value']}, {k2['cones_hit']['value']}")
+    check(kept2 == 2 and hit2 > 0, "lane 3 lost, cones hit")
+    check(k2["lanes_kept"]["value"] == kept2 and k2["cones_hit"]["value"] == hit2,
+          "kpis = this test's counts for the shifted lane")
+    check(not k2["lanes_kept"]["passed"] and not k2["cones_hit"]["passed"], "and they fail")
+
+
+def iso3888_lanes_and_cones(rows, start, offset, b, length, front, spacing, radius):
+    """ISO 3888-1 (docs/kpis.md): lanes 1/3/5 of widths 1.1 b + 0.25, 1.2 b + 0.25, 1.3 b + 0.25
+    over 0-15, 45-70, 95-110 m from `start`, lane 3 `offset` to the left. The outline's part in a
+    lane's x range must stay within its limits; a cone (base `radius`, standing `radius` outside
+    a limit, at each lane's ends and every `spacing`) is hit when the outline comes within
+    `radius` of it. Written from the definitions, apart from rig/kpi/iso3888_kpis.cpp."""
+    lanes = [(start, start + 15, 0.0, 1.1 * b + 0.25), (start + 45, start + 70, offset, 1.2 * b + 0.25),
+             (start + 95, start + 110, 0.0, 1.3 * b + 0.25)]
+    cones = []
+    for x0, x1, yc, w in lanes:
+        xs = [x0 + i * spacing for i in range(int((x1 - x0) / spacing + 1e-9) + 1)]
+        if xs[-1] < x1 - 1e-9:
+            xs.append(x1)
+        cones += [(x, yc + side * (w / 2 + radius)) for x in xs for side in (1, -1)]
+    out, hit, through = [False] * 3, set(), False
+    for r in rows:
+        x, y, psi = r["unit0_x_m"], r["unit0_y_m"], r["unit0_yaw_rad"]
+        c, sn = math.cos(psi), math.sin(psi)
+        corners = [(x + c * bx - sn * by, y + sn * bx + c * by)
+                   for bx, by in ((front, b / 2), (front, -b / 2), (front - length, -b / 2),
+                                  (front - length, b / 2))]
+        for k, (x0, x1, yc, w) in enumerate(lanes):
+            ys = [py for px, py in corners if x0 <= px <= x1]
+            for (ax, ay), (bx_, by_) in zip(corners, corners[1:] + corners[:1]):
+                for xl in (x0, x1):
+                    if (ax - xl) * (bx_ - xl) < 0:
+                        ys.append(ay + (xl - ax) / (bx_ - ax) * (by_ - ay))
+            if ys and (max(ys) > yc + w / 2 or min(ys) < yc - w / 2):
+                out[k] = True
+        through = through or min(px for px, _ in corners) > lanes[2][1]
+        for i, (qx, qy) in enumerate(cones):
+            if i in hit or abs(qx - x) > length + b:
+                continue
+            u, v = c * (qx - x) + sn * (qy - y), -sn * (qx - x) + c * (qy - y)
+            du = max(front - length - u, 0.0, u - front)
+            dv = max(abs(v) - b / 2, 0.0)
+            if math.hypot(du, dv) <= radius:
+                hit.add(i)
+    return (3 - sum(out) if through else 0), len(hit)
 
 
 def case_grade_hold_20pct(s, rows):
@@ -179,7 +241,51 @@ def case_grade_hold_20pct(s, rows):
     check(up > 20.0, f"drives {up:.1f} m uphill in 16 s after release")
 
 
+def iso7401_step(rows, response, t_from, steady_s, fraction=0.9):
+    """ISO 7401 step input from the log (docs/kpis.md): the time reference where the steering-
+    wheel angle reaches 50 % of its change; response time to `fraction` of the response's
+    change, the peak's time, overshoot and gain; changes from the window's first sample to the
+    mean over its last `steady_s`. Written from the definitions, apart from rig/kpi."""
+    w = [r for r in rows if r["sim_time_s"] >= t_from - 5e-4]
+    t = [r["sim_time_s"] for r in w]
+    x = [r["steering_wheel_angle_rad"] for r in w]
+    y = [r[response] for r in w]
+    late = [i for i in range(len(t)) if t[i] >= t[-1] - steady_s]
+    dx = sum(x[i] for i in late) / len(late) - x[0]
+    dy = sum(y[i] for i in late) / len(late) - y[0]
+
+    def cross(v, v0, dv, level, start):
+        for i in range(start, len(v)):
+            if (v[i] - v0) / dv >= level:
+                a, b = (v[i - 1] - v0) / dv, (v[i] - v0) / dv
+                return i, t[i - 1] + (level - a) / (b - a) * (t[i] - t[i - 1])
+        return None, float("nan")
+
+    i_ref, t_ref = cross(x, x[0], dx, 0.5, 1)
+    _, t_resp = cross(y, y[0], dy, fraction, i_ref)
+    i_peak = max(range(i_ref, len(y)), key=lambda i: (y[i] - y[0]) / dy)
+    return {"response_time": t_resp - t_ref, "peak_response_time": t[i_peak] - t_ref,
+            "overshoot": (y[i_peak] - y[0]) / dy - 1, "steady_gain": dy / dx}
+
+
 def case_step_steer_iso7401(s, rows):
+    k = kpis_of(s)
+    yaw = iso7401_step(rows, "unit0_wz_radps", 0.5, 1.0)
+    ay = iso7401_step(rows, "unit0_ay_mps2", 0.5, 1.0)
+    print(f"ISO 7401 from the log: yaw rate response {yaw['response_time']:.4f} s, peak "
+          f"{yaw['peak_response_time']:.4f} s, overshoot {100 * yaw['overshoot']:.2f} %, gain "
+          f"{yaw['steady_gain']:.4f} 1/s; a_y response {ay['response_time']:.4f} s")
+    for name, ref in (("yaw_rate_response_time_s", yaw["response_time"]),
+                      ("yaw_rate_peak_response_time_s", yaw["peak_response_time"]),
+                      ("yaw_rate_overshoot", yaw["overshoot"]), ("yaw_rate_gain_1ps", yaw["steady_gain"]),
+                      ("lateral_accel_response_time_s", ay["response_time"])):
+        check(abs(k[name]["value"] - ref) <= 1e-6 * max(1.0, abs(ref)),
+              f"kpi {name} {k[name]['value']:.6f} = this test's ISO 7401 {ref:.6f}")
+    # the steady gain against the model's steady state (model/vehicle/README.md: 0.187 rad/s at
+    # 0.5 rad): the hand value r / delta_H
+    end = at(rows, 6.0)
+    check(abs(yaw["steady_gain"] - end["unit0_wz_radps"] / end["steering_wheel_angle_rad"]) < 0.005,
+          "gain = steady yaw rate / wheel angle at 6 s")
     end = at(rows, 6.0)
     r_end, ay_end = end["unit0_wz_radps"], end["unit0_ay_mps2"]
     # model/vehicle/README.md: 0.187 rad/s, 4.1 m/s^2 at 80 km/h
@@ -191,11 +297,95 @@ def case_step_steer_iso7401(s, rows):
     check(peak < 1.2 * r_end, f"overshoot {100 * (peak / r_end - 1):.1f} % (< 20 %)")
 
 
+def iso4138_understeer(rows, plateau_s, steady_s, wheelbase, ratio, ay_max=4.0, band=0.1):
+    """ISO 4138 constant radius (docs/kpis.md): per speed step the means over its last
+    `steady_s` (steady if v varied < `band`); K = slope of delta_H / i_s - l r / v over a_y = v r
+    up to `ay_max`. Written from the definitions, apart from rig/kpi/circle_kpis.cpp."""
+    groups = {}
+    for r in rows:
+        j = math.floor(r["sim_time_s"] / plateau_s)
+        if r["sim_time_s"] - j * plateau_s >= plateau_s - steady_s:
+            groups.setdefault(j, []).append(r)
+    xs, ys = [], []
+    for j, g in sorted(groups.items()):
+        if (j + 1) * plateau_s > rows[-1]["sim_time_s"] + 2e-3:
+            continue  # the run ended before this step did
+        v = [r["unit0_vx_mps"] for r in g]
+        if max(v) - min(v) >= band:
+            continue
+        vm, rm = sum(v) / len(v), sum(r["unit0_wz_radps"] for r in g) / len(g)
+        am = sum(r["steering_wheel_angle_rad"] for r in g) / len(g)
+        if 0 <= vm * rm <= ay_max:
+            xs.append(vm * rm)
+            ys.append(am / ratio - wheelbase * rm / vm)
+    return lsq_slope(xs, ys), len(xs)
+
+
 def case_circle_iso4138(s, rows):
+    k = kpis_of(s)["understeer_gradient_radpmps2"]
+    st = vehicle_file(config_path(NAME))["steering"]
+    ratio = st["steering_arm_m"] / st["rack_per_pinion_m_per_rad"]
+    veh = vehicle_file(config_path(NAME))
+    steered = [a["position_x_m"] for a in veh["axle"] if a.get("steered")]
+    rear = [a["position_x_m"] for a in veh["axle"] if not a.get("steered")]
+    wheelbase = steered[0] - sum(rear) / len(rear)
+    ref, n = iso4138_understeer(rows, 8.0, 3.0, wheelbase, ratio)
+    print(f"ISO 4138 from the log: K {ref:.6f} rad/(m/s^2) over {n} steady states (i_s {ratio:.2f}, "
+          f"l {wheelbase:.2f} m); kpi {k['value']:.6f}")
+    check(n >= 6, f"{n} steady states with a_y <= 4 m/s^2")
+    check(abs(k["value"] - ref) <= 1e-6 * abs(ref), "kpi understeer_gradient = this test's ISO 4138")
+    check(k["passed"], "within the bench's band")
     ay = [abs(r["unit0_ay_mps2"]) for r in rows]
     check(max(ay) > 7.0, f"a_y reaches {max(ay):.2f} m/s^2 (> 7, saturation near mu g)")
     check(max(ay) < 9.81, "a_y below mu g")
     check(speed(rows[-1]) > speed(rows[0]) + 10.0, "speed raised along the circle")
+
+
+def braking_from_log(rows, brake_row, stop=0.01):
+    """From the brake point's row: the distance until |v| falls to `stop` (trapezoids, the
+    crossing interpolated) and the UN ECE R13-H mean fully developed deceleration
+    (v_b^2 - v_e^2) / (2 (s_e - s_b)), v_b = 0.8 v0, v_e = 0.1 v0. Apart from rig/kpi."""
+    def distance_to(level):
+        d = 0.0
+        for a, b in zip(rows[brake_row:], rows[brake_row + 1:]):
+            va, vb, dt = abs(a["unit0_vx_mps"]), abs(b["unit0_vx_mps"]), b["sim_time_s"] - a["sim_time_s"]
+            if vb > level:
+                d += 0.5 * (va + vb) * dt
+                continue
+            f = (va - level) / (va - vb)
+            return d + 0.5 * (va + level) * f * dt
+        return float("nan")
+    v0 = abs(rows[brake_row]["unit0_vx_mps"])
+    sb, se = distance_to(0.8 * v0), distance_to(0.1 * v0)
+    return distance_to(stop), ((0.8 * v0) ** 2 - (0.1 * v0) ** 2) / (2 * (se - sb)), v0
+
+
+def case_braking_100_0(s, rows):
+    k = kpis_of(s)
+    ev = {e["name"]: e["time_s"] for e in s["scenario_events"]}
+    check(s["stop_reason"] == "event", "the stop event ended the run")
+    # the brake event fires at the first cycle whose last state is past x = 30 m
+    i_fire = next(i for i, r in enumerate(rows) if r["unit0_x_m"] >= 30.0)
+    check(abs(ev["brake"] - rows[i_fire]["sim_time_s"]) < 1e-9,
+          f"brake event at {ev['brake']:.3f} s, when x passed 30 m")
+    # the ramp from 0 to 80 bar in 0.2 s: 4e4 Pa per 1 ms cycle from the firing cycle (0) on;
+    # a cycle's input shows in the state one step later, so 1 bar is crossed 3 + 1 steps later
+    i_brake = next(i for i, r in enumerate(rows) if r["brake_pressure_fl_pa"] >= 1e5)
+    check(i_brake == i_fire + 4, f"brake point {rows[i_brake]['sim_time_s']:.3f} s = firing + 4 ms")
+    check(abs(rows[i_fire + 3]["brake_pressure_fl_pa"] - 8e4) < 1e-3, "the ramp: 80 kPa after 2 steps")
+    # stop: speed below 0.1 m/s for 2 s
+    i_slow = next(i for i, r in enumerate(rows) if r["sim_time_s"] > ev["brake"] and abs(r["unit0_vx_mps"]) < 0.1)
+    check(abs(ev["stopped"] - rows[i_slow]["sim_time_s"] - 2.0) < 2e-3,
+          f"stopped at {ev['stopped']:.3f} s, 2 s after the speed fell below 0.1 m/s")
+    dist, mfdd, v0 = braking_from_log(rows, i_brake)
+    print(f"braking from {v0 * 3.6:.1f} km/h: distance {dist:.3f} m, MFDD {mfdd:.3f} m/s^2 (log); "
+          f"kpis {k['braking_distance_m']['value']:.3f} m, {k['mean_deceleration_mps2']['value']:.3f}")
+    check(abs(k["braking_distance_m"]["value"] - dist) < 1e-6, "kpi braking distance = the log's")
+    check(abs(k["mean_deceleration_mps2"]["value"] - mfdd) < 1e-6, "kpi MFDD = the log's")
+    # hand bound: with the MFDD from 0.8 v0 down and the ramp's lag, v0^2 / (2 MFDD) plus v0 t_ramp/2
+    hand = v0 ** 2 / (2 * mfdd) + v0 * 0.1
+    check(abs(dist - hand) < 0.1 * hand, f"distance {dist:.2f} m within 10 % of v0^2/(2 d_m) + v0 t_r/2 = {hand:.2f}")
+    check(k["braking_distance_m"]["passed"] and k["mean_deceleration_mps2"]["passed"], "within limits")
 
 
 def case_acceleration_coastdown(s, rows):
