@@ -19,6 +19,7 @@
 #include "model/road/crg_surface.h"
 #include "rig/config.h"
 #include "rig/sinks.h"
+#include "rig/sweep/sweep_command.h"
 
 namespace rig {
 
@@ -176,6 +177,18 @@ void check_opendrive(const FileContent& c, std::ostream& /*notes*/) {
   for (const auto& warning : file.warnings) std::cerr << "rig: warning: " << warning << "\n";
 }
 
+// ---- sweep specifications (rig sweep SPEC; config/sweeps/): TOML with base = "..." or
+// maneuvers = [...] at the top and no [rig] or [model]
+
+bool is_sweep(const FileContent& c) {
+  return c.toml && (c.toml->contains("base") || c.toml->contains("maneuvers")) &&
+         !has_table(c, "rig") && !has_table(c, "model");
+}
+
+void check_sweep(const FileContent& c, std::ostream& notes) {
+  notes << "note: " << sweep::check_sweep_spec(c.path) << " runs\n";
+}
+
 /// The registry. A new kind of file: one entry (and its recognizer and checker above).
 constexpr std::array kFileKinds{
     FileKind{"run-config",
@@ -196,6 +209,8 @@ constexpr std::array kFileKinds{
              is_crg, check_crg},
     FileKind{"opendrive", "XML with the root element <OpenDRIVE> (an ASAM OpenDRIVE road, .xodr)",
              is_opendrive, check_opendrive},
+    FileKind{"sweep", "TOML with base = \"...\" or maneuvers = [...] and [[vary]] (rig sweep; config/sweeps/)",
+             is_sweep, check_sweep},
 };
 
 void print_expected(std::ostream& err) {

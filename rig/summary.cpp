@@ -96,6 +96,31 @@ std::string scenario_events_json(const std::vector<std::pair<std::string, double
   return j + "]";
 }
 
+/// The rack-in-the-loop frame bookkeeping (which cycle answered which frame).
+std::string cycle_frames_json(const CycleFrameStats& cf) {
+  return fmt(
+      "{\"received\": %llu, \"answered_same_cycle\": %llu, \"answered_next_cycle\": %llu, "
+      "\"answered_later\": %llu, \"last_rx_cycle\": %lld, \"last_tx_cycle\": %lld, "
+      "\"lockstep_waits\": %llu, \"lockstep_timeouts\": %llu, \"lockstep_wait_max_ns\": %llu}",
+      ull(cf.received), ull(cf.answered_same_cycle), ull(cf.answered_next_cycle),
+      ull(cf.answered_later), static_cast<long long>(cf.last_rx_cycle),
+      static_cast<long long>(cf.last_tx_cycle), ull(cf.lockstep_waits), ull(cf.lockstep_timeouts),
+      ull(cf.lockstep_wait_max_ns));
+}
+
+/// Every valid output signal's last value, by its catalogue name.
+std::string outputs_json(const model::Signals& signals) {
+  std::string j = "{";
+  bool first = true;
+  for (const auto& s : model::kSignalTable) {
+    if (s.is_input || !signals.valid[model::index(s.id)]) continue;
+    j += std::string(first ? "" : ", ") + json_string(s.name) + ": " +
+         json_number(signals.value[model::index(s.id)], "%.17g");
+    first = false;
+  }
+  return j + "}";
+}
+
 }  // namespace
 
 std::string summary_line(const Executive& e) {
@@ -161,25 +186,8 @@ std::string summary_json(const Executive& e, const SummaryExtras& x) {
       "  \"skipped_periods\": %llu,\n  \"snapshots_dropped\": %llu,\n  \"events_lost\": %llu,\n",
       ull(e.skipped_periods()), ull(e.snapshots_dropped()), ull(x.events_lost));
   j += "  \"can\": " + can_json(e.io_counters()) + ",\n";
-  const CycleFrameStats& cf = e.cycle_frames();
-  j +=
-      fmt("  \"cycle_frames\": {\"received\": %llu, \"answered_same_cycle\": %llu, "
-          "\"answered_next_cycle\": %llu, \"answered_later\": %llu, \"last_rx_cycle\": %lld, "
-          "\"last_tx_cycle\": %lld, \"lockstep_waits\": %llu, \"lockstep_timeouts\": %llu, "
-          "\"lockstep_wait_max_ns\": %llu},\n",
-          ull(cf.received), ull(cf.answered_same_cycle), ull(cf.answered_next_cycle),
-          ull(cf.answered_later), static_cast<long long>(cf.last_rx_cycle),
-          static_cast<long long>(cf.last_tx_cycle), ull(cf.lockstep_waits),
-          ull(cf.lockstep_timeouts), ull(cf.lockstep_wait_max_ns));
-  j += "  \"outputs\": {";
-  bool first = true;
-  for (const auto& s : model::kSignalTable) {
-    if (s.is_input || !e.signals().valid[model::index(s.id)]) continue;
-    j += std::string(first ? "" : ", ") + json_string(s.name) + ": " +
-         json_number(e.signals().value[model::index(s.id)], "%.17g");
-    first = false;
-  }
-  j += "},\n";
+  j += "  \"cycle_frames\": " + cycle_frames_json(e.cycle_frames()) + ",\n";
+  j += "  \"outputs\": " + outputs_json(e.signals()) + ",\n";
   if (e.vehicle_fault().kind != model::FaultKind::kNone) {
     j += "  \"vehicle_fault\": " + vehicle_fault_json(e.vehicle_fault(), e.fault_unit_file()) +
          ",\n";

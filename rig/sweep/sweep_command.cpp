@@ -53,6 +53,17 @@ void check_values(const SweepSpec& spec, const std::vector<SweepRun>& runs) {
   }
 }
 
+}  // namespace
+
+std::size_t check_sweep_spec(const std::filesystem::path& spec_file) {
+  const SweepSpec spec = load_sweep_spec(spec_file);
+  const std::vector<SweepRun> runs = expand(spec);
+  check_values(spec, runs);
+  return runs.size();
+}
+
+namespace {
+
 std::filesystem::path out_dir(const SweepOptions& o, const std::string& name) {
   return o.out.empty() ? std::filesystem::path("out") / ("sweep-" + name)
                        : std::filesystem::path(o.out);

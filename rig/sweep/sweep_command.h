@@ -6,6 +6,8 @@
 /// writes DIR/campaign.csv, DIR/junit.xml and DIR/plots/. `--task I` is one array task (what
 /// the sbatch script runs); `--collect` only gathers DIR's results again.
 
+#include <cstddef>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -22,6 +24,11 @@ struct SweepOptions {
   bool no_plots = false;
   std::optional<long long> task;
 };
+
+/// Checks SPEC as `rig sweep` does before any run (strict spec, every run's configuration with
+/// each axis value loaded); throws what is wrong (ConfigError, or naming the run). Returns the
+/// number of runs. `rig check` uses it for the sweep kind.
+std::size_t check_sweep_spec(const std::filesystem::path& spec);
 
 /// The exit code: 0 every run ended as asked; 1 a run did not (or never ran); 3 with
 /// --fail-on-kpi a KPI failed; 2 a bad spec, value or command line (before any run).

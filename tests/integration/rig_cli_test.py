@@ -201,8 +201,8 @@ def case_usage():
 # folder fails here until its kind is registered in rig/check.cpp and named here.
 KIND_OF_FOLDER = {"": "run-config", "maneuvers": "run-config", "combinations": "combination",
                   "vehicles": "vehicle", "can/.toml": "can-mapping", "can/.dbc": "dbc",
-                  "roads/.xodr": "opendrive", "roads/.crg": "crg"}
-KINDS = ["run-config", "combination", "vehicle", "can-mapping", "dbc", "crg", "opendrive"]
+                  "roads/.xodr": "opendrive", "roads/.crg": "crg", "sweeps": "sweep"}
+KINDS = ["run-config", "combination", "vehicle", "can-mapping", "dbc", "crg", "opendrive", "sweep"]
 
 
 def config_files():

@@ -33,10 +33,25 @@ def parse(argv):
     return args, prefixes
 
 
+# what the page loads besides its own files: uPlot from npm (scripts/setup: npm ci in rig/scope)
+PAGE_LIBRARY = ("uPlot.iife.min.js", "uPlot.min.css")
+
+
+def missing_library(web_dirs):
+    """The page's library files found in none of web_dirs."""
+    return [name for name in PAGE_LIBRARY
+            if not any(os.path.isfile(os.path.join(d, name)) for d in web_dirs)]
+
+
 def main(argv, web_dirs):
     from .server import Scope, Server, handler_class
 
     args, prefixes = parse(argv)
+    missing = missing_library(web_dirs)
+    if missing:  # a page without its plotting library would load and never draw
+        print(f"rig-scope: {', '.join(missing)} not found in {', '.join(map(str, web_dirs))}: "
+              "run scripts/setup (npm ci in rig/scope)", file=sys.stderr)
+        return 1
     try:
         scope = Scope(args.lcm_url, prefixes)
     except OSError as error:
