@@ -209,8 +209,10 @@ constexpr std::array kFileKinds{
              is_crg, check_crg},
     FileKind{"opendrive", "XML with the root element <OpenDRIVE> (an ASAM OpenDRIVE road, .xodr)",
              is_opendrive, check_opendrive},
-    FileKind{"sweep", "TOML with base = \"...\" or maneuvers = [...] and [[vary]] (rig sweep; config/sweeps/)",
-             is_sweep, check_sweep},
+    FileKind{
+        "sweep",
+        "TOML with base = \"...\" or maneuvers = [...] and [[vary]] (rig sweep; config/sweeps/)",
+        is_sweep, check_sweep},
 };
 
 void print_expected(std::ostream& err) {
