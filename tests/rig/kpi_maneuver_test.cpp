@@ -18,6 +18,7 @@
 #include "rig/kpi/kpi_recorder.h"
 #include "rig/kpi/kpi_spec.h"
 #include "rig/kpi/step_response_kpis.h"
+#include "tests/support/config_error_of.h"
 
 namespace rig::kpi {
 namespace {
@@ -226,12 +227,7 @@ std::vector<KpiSpec> parse(const std::string& text) {
 }
 
 std::string message_of(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const io::config::ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return test::config_error_of([&] { parse(text); });
 }
 
 TEST(ManeuverKpiSpec, ReadsTheKindsKeysAndUnits) {

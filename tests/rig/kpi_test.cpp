@@ -12,6 +12,7 @@
 #include "rig/kpi/kpi_recorder.h"
 #include "rig/kpi/kpi_spec.h"
 #include "rig/kpi/steering_kpis.h"
+#include "tests/support/config_error_of.h"
 
 namespace rig::kpi {
 namespace {
@@ -79,14 +80,7 @@ std::vector<KpiSpec> parse(const std::string& text) {
   return specs;
 }
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const io::config::ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string message_of(const std::function<void()>& f) { return test::config_error_of(f); }
 
 TEST(KpiSpec, ReadsEveryKeyAndDerivesUnits) {
   const auto specs = parse(R"(

@@ -15,6 +15,7 @@
 #include "tests/rig/fake_clock.h"
 #include "tests/rig/test_model.h"
 #include "tests/support/alloc_counter.h"
+#include "tests/support/config_error_of.h"
 
 namespace rig::driver {
 namespace {
@@ -30,12 +31,7 @@ std::vector<EventSpec> parse(const std::string& text) {
 }
 
 std::string message_of(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const io::config::ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return test::config_error_of([&] { parse(text); });
 }
 
 /// One cycle's view: the inputs in `s`, the report's x position.

@@ -9,18 +9,12 @@
 
 #include "io/config/config_error.h"
 #include "io/config/strict_table.h"
+#include "tests/support/config_error_of.h"
 
 namespace rig::io::config {
 namespace {
 
-std::string message_of(auto&& f) {
-  try {
-    f();
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string message_of(auto&& f) { return test::config_error_of(f); }
 
 toml::table patched(const std::string& text, const std::vector<std::string>& sets) {
   toml::table doc = toml::parse(std::string_view(text), std::string("file.toml"));
