@@ -12,6 +12,7 @@
 #include "io/config/config_error.h"
 #include "io/config/crg_file.h"
 #include "io/config/input_file.h"
+#include "io/config/leaf_spring_config.h"
 #include "io/config/opendrive_file.h"
 #include "io/config/strict_table.h"
 #include "io/config/vehicle_file.h"
@@ -176,6 +177,16 @@ void check_opendrive(const FileContent& c, std::ostream& /*notes*/) {
   for (const auto& warning : file.warnings) std::cerr << "rig: warning: " << warning << "\n";
 }
 
+// ---- a leaf spring on its own: a TOML file with only [axle.leaf_spring] (issue 17 item 2)
+
+bool is_leaf_spring(const FileContent& c) {
+  return has_table(c, "axle") && (*c.toml)["axle"]["leaf_spring"].as_table() != nullptr;
+}
+
+void check_leaf_spring(const FileContent& c, std::ostream& /*notes*/) {
+  (void)io::config::load_leaf_spring_file(c.path);
+}
+
 /// The registry. A new kind of file: one entry (and its recognizer and checker above).
 constexpr std::array kFileKinds{
     FileKind{"run-config",
@@ -196,6 +207,8 @@ constexpr std::array kFileKinds{
              is_crg, check_crg},
     FileKind{"opendrive", "XML with the root element <OpenDRIVE> (an ASAM OpenDRIVE road, .xodr)",
              is_opendrive, check_opendrive},
+    FileKind{"leaf-spring", "TOML with only [axle.leaf_spring] (a five-link leaf spring)",
+             is_leaf_spring, check_leaf_spring},
 };
 
 void print_expected(std::ostream& err) {
