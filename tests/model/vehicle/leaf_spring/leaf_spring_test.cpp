@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "model/vehicle/leaf_spring/leaf_spring.h"
+#include "tests/model/vehicle/leaf_spring/load_history.h"
 #include "tests/model/vehicle/leaf_spring/reference_json.h"
 #include "tests/model/vehicle/leaf_spring/van_leaf_params.h"
 #include "tests/support/alloc_counter.h"
@@ -156,17 +157,7 @@ TEST(LeafSpring, FreeLeafCarriesNothing) {
   EXPECT_NEAR(leaf.geometry().eye_frame_m.y(), 0.08 + 0.10, 1e-15);
 }
 
-/// A 10 s history at 1 ms: 1.5 Hz bounce of +-40 mm about the static pose, a 50 ms pothole of
-/// 50 mm (up to 3.1 m/s), 8 Hz axle tramp of +-0.02 rad and braking wind-up of 0.03 rad.
-SeatPose history_pose(const SeatPose& stat, int k) {
-  const double t = 1e-3 * k;
-  const double two_pi = 2.0 * std::numbers::pi;
-  double z = 0.04 * std::sin(two_pi * 1.5 * t);
-  if (t >= 2.0 && t < 2.05) z += 0.025 * (1.0 - std::cos(two_pi * (t - 2.0) / 0.05));
-  const double pitch = 0.03 * std::sin(two_pi * 0.5 * t) + 0.02 * std::sin(two_pi * 8.0 * t);
-  const double x = 0.005 * std::sin(two_pi * 3.0 * t);
-  return stat + SeatPose(x, z, pitch);
-}
+using rig::test::leaf_history_pose;
 
 TEST(LeafSpring, NewtonConvergesWithinFourIterationsPerMillisecond) {
   const LeafSpring leaf(rig::test::van_rear_leaf());
@@ -175,7 +166,7 @@ TEST(LeafSpring, NewtonConvergesWithinFourIterationsPerMillisecond) {
   (void)loaded(leaf, {0.0, rig::test::kVanLeafStaticLoadN, 0.0}, stat, s);
   std::array<int, 6> histogram{};
   for (int k = 0; k <= 10000; ++k) {
-    const LeafForces f = leaf.evaluate(history_pose(stat, k), s);
+    const LeafForces f = leaf.evaluate(leaf_history_pose(stat, k), s);
     ASSERT_TRUE(f.converged) << "step " << k;
     ASSERT_LE(f.iterations, 4) << "step " << k;
     ++histogram[static_cast<std::size_t>(f.iterations)];
@@ -280,7 +271,7 @@ TEST(LeafSpring, EvaluateDoesNotAllocate) {
   double sink = 0;
   const rig::test::AllocationCounter counter;
   Eigen::internal::set_is_malloc_allowed(false);  // an Eigen heap allocation would abort here
-  for (int k = 0; k < 2000; ++k) sink += leaf.evaluate(history_pose(stat, k), s).on_axle(1);
+  for (int k = 0; k < 2000; ++k) sink += leaf.evaluate(leaf_history_pose(stat, k), s).on_axle(1);
   Eigen::internal::set_is_malloc_allowed(true);
   EXPECT_EQ(counter.count(), 0U);
   EXPECT_TRUE(std::isfinite(sink));
