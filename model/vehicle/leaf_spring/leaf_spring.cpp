@@ -2,12 +2,13 @@
 
 #include <cmath>
 
+#include "model/vehicle/leaf_spring/small_solve.h"
+
 namespace rig::model::vehicle::leaf_spring {
 
 namespace {
 
 using Kkt = Eigen::Matrix<double, 7, 7>;
-using KktLu = Eigen::PartialPivLU<Kkt>;
 using SeatCoupling = Eigen::Matrix<double, 7, 3>;
 
 /// (x, z, pitch) <-> (x, z, theta): the leaf's angles turn from +x towards +z, pitch the other way.
@@ -51,8 +52,9 @@ bool within_tolerance(const LeafSpringParams& p, const Internal& r) {
 void forces_at(const Equilibrium& e, const Eigen::Vector2d& bushing_npm, LeafState& state,
                LeafForces& out) {
   const LeafTerms& t = e.terms;
-  const KktLu lu(e.a);
-  const SeatCoupling s = lu.solve(e.b);  // A^-1 B; d(internal)/d(seat) = -s
+  Kkt a = e.a;
+  SeatCoupling s = e.b;
+  (void)solve_in_place(a, s);  // s = A^-1 B; d(internal)/d(seat) = -s
   state.d_internal_d_seat = -s;
   const Eigen::Matrix3d k_seat =
       t.hessian.topLeftCorner<kSeatCoords, kSeatCoords>() - e.b.transpose() * s;
@@ -95,7 +97,10 @@ LeafForces LeafSpring::evaluate(const SeatPose& seat_pose, LeafState& state) con
     assemble(geometry_, seat, u, e);
     out.converged = within_tolerance(params_, e.residual);
     if (out.converged || out.iterations == params_.max_iterations || !e.residual.allFinite()) break;
-    u -= KktLu(e.a).solve(e.residual);
+    Kkt a = e.a;
+    Internal step = e.residual;
+    if (!solve_in_place(a, step)) break;
+    u -= step;
     ++out.iterations;
   }
   // stage 3: keep the solution; forces and their partials (implicit function theorem)

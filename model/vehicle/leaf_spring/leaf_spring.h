@@ -15,7 +15,6 @@
 /// +x towards -z). The leaf spans the frame's vertical plane at the spring's lateral position.
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include "model/vehicle/leaf_spring/leaf_spring_energy.h"
 #include "model/vehicle/leaf_spring/leaf_spring_params.h"

@@ -4,6 +4,8 @@
 // leaf's state at a pose 1 mm away.
 #include <benchmark/benchmark.h>
 
+#include <Eigen/LU>
+
 #include "model/vehicle/leaf_spring/leaf_spring.h"
 #include "tests/model/vehicle/leaf_spring/load_history.h"
 #include "tests/model/vehicle/leaf_spring/van_leaf_params.h"

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include <Eigen/LU>
+
 #include "model/vehicle/leaf_spring/leaf_spring.h"
 #include "tests/model/vehicle/leaf_spring/load_history.h"
 #include "tests/model/vehicle/leaf_spring/van_leaf_params.h"

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/LU>
+
 #include "model/vehicle/leaf_spring/leaf_spring.h"
 #include "tests/model/vehicle/leaf_spring/load_history.h"
 #include "tests/model/vehicle/leaf_spring/reference_json.h"
