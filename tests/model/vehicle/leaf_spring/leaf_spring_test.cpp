@@ -57,15 +57,18 @@ LeafForces loaded(const LeafSpring& leaf, const Eigen::Vector3d& load, SeatPose&
   return f;
 }
 
+/// The tangent stiffnesses the FE reference reports: vertical rate and wind-up with the other
+/// coordinates free (1 / compliance), wind-up with the axle held (x, z), fore-aft with it free.
 struct Tangent {
-  double rate_npm, windup_free_nmprad, windup_held_nmprad;
+  double rate_npm, windup_free_nmprad, windup_held_nmprad, fore_aft_free_npm;
 };
 
-Tangent tangent(const LeafForces& f) {
-  const Eigen::Matrix3d k = -f.d_on_axle_d_seat;
+Tangent tangent(const Eigen::Matrix3d& k) {
   const Eigen::Matrix3d c = k.inverse();
-  return {1.0 / c(1, 1), 1.0 / c(2, 2), k(2, 2)};
+  return {1.0 / c(1, 1), 1.0 / c(2, 2), k(2, 2), 1.0 / c(0, 0)};
 }
+
+Tangent tangent(const LeafForces& f) { return tangent(Eigen::Matrix3d(-f.d_on_axle_d_seat)); }
 
 void expect_within(double model, double fe, double fraction, const std::string& what) {
   EXPECT_LE(std::abs(model - fe), fraction * std::abs(fe))
@@ -101,7 +104,9 @@ TEST(LeafSpringReference, VerticalLoadRangeMatchesTheBeam) {
   const auto rate = j.numbers("vertical_rate_npm");
   const auto wind_free = j.numbers("vertical_windup_free_nmprad");
   const auto wind_held = j.numbers("vertical_windup_held_nmprad");
+  const auto stiffness = j.numbers("vertical_stiffness");  // 3 x 3 per load, row-major
   ASSERT_EQ(load.size(), 18U);
+  ASSERT_EQ(stiffness.size(), 9 * load.size());
   LeafState s = leaf.free_state();
   SeatPose q = SeatPose::Zero();
   const double psi0 = leaf.params().shackle_angle_free_rad;
@@ -112,6 +117,9 @@ TEST(LeafSpringReference, VerticalLoadRangeMatchesTheBeam) {
     expect_within(t.rate_npm, rate[i], 0.05, "vertical rate" + at);
     expect_within(t.windup_free_nmprad, wind_free[i], 0.10, "wind-up stiffness, axle free" + at);
     expect_within(t.windup_held_nmprad, wind_held[i], 0.10, "wind-up stiffness, axle held" + at);
+    const Tangent fe = tangent(Eigen::Matrix3d::Map(&stiffness[9 * i]).transpose());
+    EXPECT_NEAR(fe.rate_npm, rate[i], 1e-6 * rate[i]);  // the same matrix
+    expect_within(t.fore_aft_free_npm, fe.fore_aft_free_npm, 0.10, "fore-aft stiffness" + at);
     if (load[i] == 0.0) continue;
     expect_within(q(1), z[i], 0.05, "vertical travel" + at);
     expect_within(q(0), x[i], 0.10, "fore-aft travel" + at);
