@@ -13,6 +13,7 @@ using SeatCoupling = Eigen::Matrix<double, 7, 3>;
 
 /// (x, z, pitch) <-> (x, z, theta): the leaf's angles turn from +x towards +z, pitch the other way.
 const Eigen::Vector3d kIso(1.0, 1.0, -1.0);
+constexpr double kMaxTurnRad = 0.2;
 
 Coords compose(const Eigen::Vector3d& seat, const Internal& u) {
   Coords w;
@@ -100,13 +101,20 @@ LeafForces LeafSpring::evaluate(const SeatPose& seat_pose, LeafState& state) con
     Kkt a = e.a;
     Internal step = e.residual;
     if (!solve_in_place(a, step)) break;
+    // a jump of the seat (a reset without settle()) must not flip a link: at most kMaxTurnRad
+    // per iteration; in a step of 1 ms the turns are below 1e-3 rad and this never acts
+    const double turn = step.head<kLinkCoords>().cwiseAbs().maxCoeff();
+    if (turn > kMaxTurnRad) step *= kMaxTurnRad / turn;
     u -= step;
     ++out.iterations;
   }
-  // stage 3: keep the solution; forces and their partials (implicit function theorem)
-  state.internal = u;
-  state.seat = seat;
-  forces_at(e, geometry_.bushing_npm, state, out);
+  // stage 3: forces and their partials (implicit function theorem); the new solution is kept
+  // unless it is not finite (a NaN pose), so that the next sane pose starts from the last good one
+  LeafState next = state;
+  next.internal = u;
+  next.seat = seat;
+  forces_at(e, geometry_.bushing_npm, next, out);
+  if (next.internal.allFinite() && next.d_internal_d_seat.allFinite()) state = next;
   return out;
 }
 

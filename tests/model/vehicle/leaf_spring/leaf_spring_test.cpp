@@ -299,13 +299,38 @@ TEST(LeafSpring, BadParametersAreRejectedAtConstruction) {
   EXPECT_THROW(LeafSpring{p}, std::invalid_argument);
 }
 
-// A seat pose that is not a number does not hang or pretend: it reports no convergence.
-TEST(LeafSpring, NanPoseIsNotConverged) {
+// A seat pose that is not a number does not hang or pretend: it reports no convergence, and
+// the state stays the last good one.
+TEST(LeafSpring, NanPoseIsNotConvergedAndNotKept) {
   const LeafSpring leaf(rig::test::van_rear_leaf());
-  LeafState s = leaf.free_state();
+  LeafState s;
+  ASSERT_TRUE(leaf.settle({-0.012, 0.076, 0.034}, s));
+  const LeafForces before = leaf.evaluate({-0.012, 0.076, 0.034}, s);
   const LeafForces f = leaf.evaluate({0.0, std::nan(""), 0.0}, s);
   EXPECT_FALSE(f.converged);
   EXPECT_LE(f.iterations, 4);
+  const LeafForces after = leaf.evaluate({-0.012, 0.076, 0.034}, s);
+  EXPECT_TRUE(after.converged);
+  EXPECT_EQ(after.iterations, 0);
+  EXPECT_EQ(after.on_axle, before.on_axle);
+}
+
+// A jump from the free leaf to 1.5 x the static deflection in one call (a reset without
+// settle): no convergence claimed until it has converged, a few calls, the same equilibrium.
+TEST(LeafSpring, AJumpConvergesOverAFewCallsToTheSettledState) {
+  const LeafSpring leaf(rig::test::van_rear_leaf());
+  const SeatPose far(-0.015, 0.115, 0.052);
+  LeafState settled;
+  ASSERT_TRUE(leaf.settle(far, settled));
+  const LeafForces reference = leaf.evaluate(far, settled);
+  LeafState s = leaf.free_state();
+  int calls = 1;
+  LeafForces f = leaf.evaluate(far, s);
+  for (; !f.converged && calls < 10; ++calls) f = leaf.evaluate(far, s);
+  std::printf("converged after %d calls of at most 4 iterations\n", calls);
+  ASSERT_TRUE(f.converged);
+  EXPECT_LE(calls, 3);
+  EXPECT_LT((f.on_axle - reference.on_axle).norm(), 1e-6);
 }
 
 }  // namespace
