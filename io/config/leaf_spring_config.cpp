@@ -66,16 +66,22 @@ LeafSpringConfig read_leaf_spring(StrictTable& leaf) {
   return c;
 }
 
+std::optional<LeafSpringConfig> read_axle_leaf_spring(StrictTable& axle) {
+  if (!axle.has("leaf_spring")) return std::nullopt;
+  const StrictTable sub = axle.table("leaf_spring");
+  StrictTable leaf(sub.raw(), axle.file(), "[axle.leaf_spring]");
+  return read_leaf_spring(leaf);
+}
+
 LeafSpringConfig load_leaf_spring_file(const std::filesystem::path& file) {
   const toml::table root = load_toml_file(file);
   StrictTable top(root, file, "top");
   StrictTable axle = top.table("axle");
-  const StrictTable sub = axle.table("leaf_spring");
-  StrictTable leaf(sub.raw(), file, "[axle.leaf_spring]");
-  LeafSpringConfig c = read_leaf_spring(leaf);
+  std::optional<LeafSpringConfig> c = read_axle_leaf_spring(axle);
+  if (!c) throw axle.error("leaf_spring", "missing required key");
   axle.finish();
   top.finish();
-  return c;
+  return *c;
 }
 
 }  // namespace rig::io::config

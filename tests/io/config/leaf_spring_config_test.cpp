@@ -2,6 +2,7 @@
 // use, and bad keys or values are `file:line:` errors naming the key.
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -52,6 +53,22 @@ TEST(LeafSpringConfig, TheVansFileIsTheTestsConstant) {
   EXPECT_EQ(c.params.eye_bushing_z_npm, p.eye_bushing_z_npm);
   EXPECT_EQ(c.params.max_iterations, 4);  // the default
   EXPECT_EQ(c.spring_track_m, rig::test::kVanSpringTrackM);
+}
+
+// As the axle loader calls it: on an [[axle]] table, with or without a leaf spring.
+TEST(LeafSpringConfig, TheAxleLoadersCall) {
+  const auto path = std::filesystem::temp_directory_path() / "leaf_spring_axles.toml";
+  std::ofstream(path) << "[[axle]]\nx_m = 1.5\n[[axle]]\nx_m = -1.8\n"
+                      << van_leaf_text().substr(van_leaf_text().find("[axle.leaf_spring]"));
+  const toml::table root = load_toml_file(path);
+  StrictTable top(root, path, "top");
+  std::vector<StrictTable> axles = top.tables("axle");
+  ASSERT_EQ(axles.size(), 2U);
+  EXPECT_FALSE(read_axle_leaf_spring(axles[0]).has_value());
+  const auto rear = read_axle_leaf_spring(axles[1]);
+  ASSERT_TRUE(rear.has_value());
+  EXPECT_EQ(rear->params.free_camber_m, 0.10);
+  EXPECT_EQ(rear->spring_track_m, rig::test::kVanSpringTrackM);
 }
 
 TEST(LeafSpringConfig, SolverKeysAreOptionalAndChecked) {
