@@ -12,6 +12,7 @@
 #include "io/config/config_error.h"
 #include "io/config/crg_file.h"
 #include "io/config/input_file.h"
+#include "io/config/leaf_spring_config.h"
 #include "io/config/opendrive_file.h"
 #include "io/config/strict_table.h"
 #include "io/config/vehicle_file.h"
@@ -189,6 +190,16 @@ void check_sweep(const FileContent& c, std::ostream& notes) {
   notes << "note: " << sweep::check_sweep_spec(c.path) << " runs\n";
 }
 
+// ---- a leaf spring on its own: a TOML file with only [axle.leaf_spring] (issue 17 item 2)
+
+bool is_leaf_spring(const FileContent& c) {
+  return has_table(c, "axle") && (*c.toml)["axle"]["leaf_spring"].as_table() != nullptr;
+}
+
+void check_leaf_spring(const FileContent& c, std::ostream& /*notes*/) {
+  (void)io::config::load_leaf_spring_file(c.path);
+}
+
 /// The registry. A new kind of file: one entry (and its recognizer and checker above).
 constexpr std::array kFileKinds{
     FileKind{"run-config",
@@ -213,6 +224,8 @@ constexpr std::array kFileKinds{
         "sweep",
         "TOML with base = \"...\" or maneuvers = [...] and [[vary]] (rig sweep; config/sweeps/)",
         is_sweep, check_sweep},
+    FileKind{"leaf-spring", "TOML with only [axle.leaf_spring] (a five-link leaf spring)",
+             is_leaf_spring, check_leaf_spring},
 };
 
 void print_expected(std::ostream& err) {

@@ -202,7 +202,8 @@ def case_usage():
 KIND_OF_FOLDER = {"": "run-config", "maneuvers": "run-config", "combinations": "combination",
                   "vehicles": "vehicle", "can/.toml": "can-mapping", "can/.dbc": "dbc",
                   "roads/.xodr": "opendrive", "roads/.crg": "crg", "sweeps": "sweep"}
-KINDS = ["run-config", "combination", "vehicle", "can-mapping", "dbc", "crg", "opendrive", "sweep"]
+KINDS = ["run-config", "combination", "vehicle", "can-mapping", "dbc", "crg", "opendrive",
+         "leaf-spring", "sweep"]
 
 
 def config_files():
