@@ -33,6 +33,8 @@ constexpr InputName kUnit1Inputs[] = {
     {Signal::kRackPositionCmd, "unit1.steering.rack_position_cmd_m"},
     {Signal::kRackPositionMeasured, "unit1.steering.rack_position_measured_m"},
     {Signal::kRackSpeedMeasured, "unit1.steering.rack_speed_measured_mps"},
+    {Signal::kDifferentialLockBetweenCmd, "unit1.drivetrain.differential_lock_between_cmd"},
+    {Signal::kDifferentialLockAxleCmd, "unit1.drivetrain.differential_lock_axle_cmd"},
 };
 
 /// The enum's outputs: the entry each one's name is an alias of ('#': the last axle).
