@@ -89,6 +89,7 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
     sequence_.add_stage(*shaft_stepper_);
   }
   if (differentials_) {
+    work_.differential_count = differentials_->tree().count;  // reported from the start
     shaft_stepper_ =
         std::make_unique<solver::ForceElementStepper<Eigen::Dynamic>>(*differentials_);
     sequence_.add_stage(*shaft_stepper_);
@@ -157,7 +158,6 @@ void VehicleBlocks::update_outputs() noexcept {
       delivered_engine_torque_nm(p_.drivetrain, inputs_.throttle, drivetrain_.engine_speed_radps(),
                                  work_.engine_torque_cut_nm, inputs_.ignition_on);
   if (differentials_) {
-    work_.differential_count = differentials_->tree().count;
     for (int j = 0; j < work_.differential_count; ++j)
       work_.differentials[static_cast<std::size_t>(j)] =
           differentials_->speeds(j, drivetrain_.carrier_speed_radps());

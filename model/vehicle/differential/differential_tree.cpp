@@ -27,6 +27,18 @@ bool contains(const std::vector<int>& axles, int axle) {
 
 }  // namespace
 
+int differential_count(const VehicleParams& p) noexcept {
+  const auto& ds = p.drivetrain.differentials;
+  if (ds.empty()) return 0;
+  int count = static_cast<int>(ds.size());
+  for (int a = 0; a < static_cast<int>(p.axles.size()); ++a) {
+    const bool named = std::any_of(ds.begin(), ds.end(),
+                                   [a](const DifferentialParams& d) { return d.axle == a; });
+    if (p.axles[static_cast<std::size_t>(a)].driven && !named) ++count;
+  }
+  return count;
+}
+
 DifferentialTree build_tree(const VehicleParams& p) {
   DifferentialTree t;
   for (int i = 0; i < 2 * static_cast<int>(p.axles.size()); ++i) {

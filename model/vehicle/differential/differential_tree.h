@@ -38,6 +38,10 @@ struct DifferentialTree {
                                                                         kMaxDifferentials>::Zero();
 };
 
+/// How many differentials the tree of p has (the configured and the implicit open ones across
+/// the other driven axles); 0 without [[drivetrain.differential]] (today's open differentials).
+[[nodiscard]] int differential_count(const VehicleParams& p) noexcept;
+
 /// The tree of p.drivetrain.differentials over p's driven axles. Assumes what the loader checks
 /// (io/config: every driven axle under exactly one root, sides disjoint, at most
 /// kMaxDifferentials and kMaxLimitedSlip).
