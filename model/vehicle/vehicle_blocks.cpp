@@ -157,11 +157,7 @@ void VehicleBlocks::update_outputs() noexcept {
   work_.engine_torque_nm =
       delivered_engine_torque_nm(p_.drivetrain, inputs_.throttle, drivetrain_.engine_speed_radps(),
                                  work_.engine_torque_cut_nm, inputs_.ignition_on);
-  if (differentials_) {
-    for (int j = 0; j < work_.differential_count; ++j)
-      work_.differentials[static_cast<std::size_t>(j)] =
-          differentials_->speeds(j, drivetrain_.carrier_speed_radps());
-  }
+  if (differentials_) differentials_->speeds(drivetrain_.carrier_speed_radps(), work_.differentials);
 }
 
 }  // namespace rig::model::vehicle

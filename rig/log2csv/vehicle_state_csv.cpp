@@ -104,7 +104,7 @@ class VehicleStateCsv final : public ChannelCsv {
     add_scalar_headers(h, Fields::kVehicleInt, has);
     h.emplace_back("num_joints");
     add_array_headers(h, Fields::kJoint, joints_, has);
-    if (has("num_diffs")) {  // not in v1 logs
+    if (has("num_diffs")) {  // not in v1 and v2 logs
       h.emplace_back("num_diffs");
       add_array_headers(h, Fields::kDiff, diffs_, has);
       add_array_headers(h, Fields::kDiffFlag, diffs_, has);

@@ -140,16 +140,19 @@ double DifferentialShafts::carrier_torque_nm(double carrier_radps) const noexcep
   return sol.torque_nm.sum();
 }
 
-DifferentialReport DifferentialShafts::speeds(int j, double carrier_radps) const noexcept {
+void DifferentialShafts::speeds(double carrier_radps,
+                                std::array<DifferentialReport, kMaxDifferentials>& out) const noexcept {
   ShaftSolution sol;
   solve(state_.shaft_twist_rad, carrier_radps, sol);
-  const double r = tree_.params[static_cast<std::size_t>(j)].split;
-  DifferentialReport out;
-  out.input_speed_radps = carrier_radps + tree_.input_row.row(j).dot(sol.delta_radps);
-  out.output_a_speed_radps = out.input_speed_radps + (1.0 - r) * sol.delta_radps(j);
-  out.output_b_speed_radps = out.input_speed_radps - r * sol.delta_radps(j);
-  out.locked = sol.fixed[static_cast<std::size_t>(j)] ? 1 : 0;
-  return out;
+  for (int j = 0; j < tree_.count; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    const double r = tree_.params[k].split;
+    DifferentialReport& d = out[k];
+    d.input_speed_radps = carrier_radps + tree_.input_row.row(j).dot(sol.delta_radps);
+    d.output_a_speed_radps = d.input_speed_radps + (1.0 - r) * sol.delta_radps(j);
+    d.output_b_speed_radps = d.input_speed_radps - r * sol.delta_radps(j);
+    d.locked = sol.fixed[k] ? 1 : 0;
+  }
 }
 
 }  // namespace rig::model::vehicle::differential

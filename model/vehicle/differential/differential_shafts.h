@@ -62,8 +62,9 @@ class DifferentialShafts final : public solver::ForceElement<Eigen::Dynamic>, pu
 
   /// The tree at twists s and carrier speed w_c, the state's wheel spins.
   void solve(const Vector& s, double carrier_radps, ShaftSolution& out) const noexcept;
-  /// Differential j's speeds at the state (its twists, spins and w_c).
-  [[nodiscard]] DifferentialReport speeds(int j, double carrier_radps) const noexcept;
+  /// Every differential's speeds and lock at the state (its twists, spins and w_c).
+  void speeds(double carrier_radps,
+              std::array<DifferentialReport, kMaxDifferentials>& out) const noexcept;
   [[nodiscard]] const DifferentialTree& tree() const noexcept { return tree_; }
   /// The clutch couple's capacity of the step (limited slip), T_L / 2 [N m].
   [[nodiscard]] double clutch_capacity_nm(int j) const noexcept {

@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <functional>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -14,6 +17,7 @@
 #include "io/config/vehicle_file.h"
 #include "model/tire/tmeasy_characteristic.h"
 #include "model/tire/tmeasy_tire.h"
+#include "model/vehicle/differential/differential_tree.h"
 #include "model/vehicle/vehicle_model.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
@@ -324,6 +328,72 @@ TEST(Differential, ViscousCentreTransfersCTimesSpeedDifference) {
   const double front_mean = 0.5 * (wheel(r, 0).spin_radps + wheel(r, 1).spin_radps);
   const double rear_mean = 0.5 * (wheel(r, 2).spin_radps + wheel(r, 3).spin_radps);
   EXPECT_NEAR(dw, front_mean - rear_mean, 0.02 * dw);
+}
+
+// ---- the file: sedan-4x4.toml, and a 6x6 tree with a group side ----
+
+TEST(DifferentialConfig, Sedan4x4AsWritten) {
+  const VehicleParams p = load("sedan-4x4.toml");
+  const auto& d = p.drivetrain.differentials;
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0].axle, -1);
+  EXPECT_EQ(d[0].side_a_axles, std::vector<int>{0});
+  EXPECT_EQ(d[0].side_b_axles, std::vector<int>{1});
+  EXPECT_EQ(d[0].kind, DifferentialKind::kViscous);
+  EXPECT_EQ(d[0].split, 0.4);
+  EXPECT_EQ(d[0].viscous_nmspr, 50.0);
+  EXPECT_TRUE(d[0].lockable);
+  EXPECT_EQ(d[1].axle, 1);
+  EXPECT_EQ(d[1].kind, DifferentialKind::kLimitedSlip);
+  EXPECT_EQ(d[1].preload_nm, 40.0);
+  EXPECT_EQ(d[1].bias_ratio, 2.0);
+  EXPECT_FALSE(d[1].lockable);
+  EXPECT_EQ(differential::differential_count(p), 3);  // + the open front
+  EXPECT_EQ(differential::differential_count(load("sedan.toml")), 0);
+}
+
+/// The 6x4 tractor with its front axle driven too: a centre differential 30 % to the front
+/// against the tandem (a side of two axles), the inter-axle differential between these.
+VehicleParams six_by_six() {
+  const std::string file = ::testing::TempDir() + "/tractor-6x6.toml";
+  std::string text;
+  {
+    std::ifstream in(RIG_SOURCE_DIR "/config/vehicles/tractor-6x4.toml");
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const auto front = text.find("driven = false");
+  text.replace(front, 14, "driven = true");
+  text += "\n[[drivetrain.differential]]\nbetween = [[1], [2, 3]]\nsplit = 0.3\n"
+          "\n[[drivetrain.differential]]\nbetween = [2, 3]\n";
+  std::ofstream(file) << text;
+  return io::config::load_vehicle_file(file);
+}
+
+TEST(DifferentialTree, SixBySixWithAGroupSide) {
+  const VehicleParams p = six_by_six();
+  const differential::DifferentialTree t = differential::build_tree(p);
+  ASSERT_EQ(t.count, 5);  // centre, inter-axle, then the open ones across axles 1, 2, 3
+  ASSERT_EQ(t.leaf_count, 6);
+  // hand: the front wheels under the centre's side a (1 - 0.3), the tandem's under side b (-0.3);
+  // the inter-axle: axle 2 side a (0.5), axle 3 side b (-0.5); each axle's: left 0.5, right -0.5
+  const double g[6][5] = {{0.7, 0, 0.5, 0, 0},     {0.7, 0, -0.5, 0, 0},
+                          {-0.3, 0.5, 0, 0.5, 0},  {-0.3, 0.5, 0, -0.5, 0},
+                          {-0.3, -0.5, 0, 0, 0.5}, {-0.3, -0.5, 0, 0, -0.5}};
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 5; ++j) EXPECT_DOUBLE_EQ(t.g(i, j), g[i][j]) << i << " " << j;
+  // inputs: the inter-axle's is the centre's side b, axle 3's the inter-axle's side b
+  EXPECT_DOUBLE_EQ(t.input_row(1, 0), -0.3);
+  EXPECT_DOUBLE_EQ(t.input_row(4, 0), -0.3);
+  EXPECT_DOUBLE_EQ(t.input_row(4, 1), -0.5);
+  EXPECT_DOUBLE_EQ(t.input_row(2, 0), 0.7);
+  EXPECT_DOUBLE_EQ(t.input_row(0, 1), 0.0);
+  // and driving: 30 % to the front, 35 % to each tandem axle, exactly
+  VehicleModel m(p, 1e-3);
+  drive(m, 1.0, kFullThrottle, [&](const ModelReport& now, const ModelReport&, double) {
+    const double all = axle_torque(now, 0) + axle_torque(now, 1) + axle_torque(now, 2);
+    EXPECT_NEAR(axle_torque(now, 0), 0.3 * all, 1e-12 * std::abs(all));
+    EXPECT_NEAR(axle_torque(now, 1), 0.35 * all, 1e-12 * std::abs(all));
+  });
 }
 
 // ---- h = 1 ms, no allocation ----
