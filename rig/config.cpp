@@ -187,7 +187,8 @@ io::signals::ModelShape model_shape(const ModelSettings& model) {
   shape.axle_count = {1, 0, 0, 0};  // the quarter car
   if (model.vehicle) {
     shape.axle_count[0] = static_cast<int>(model.vehicle->params.axles.size());
-    shape.differential_count = model::vehicle::differential::differential_count(model.vehicle->params);
+    shape.differential_count =
+        model::vehicle::differential::differential_count(model.vehicle->params);
   }
   if (model.combination) {
     const auto& units = model.combination->units;

@@ -19,8 +19,9 @@ int driven_axle(StrictTable& t, const toml::node& n, std::string_view key,
   if (!n.is_integer() || !v)
     throw t.error_at(n, key, "expected an axle number (1 = the first [[axle]])");
   if (*v < 1 || *v > static_cast<long long>(axles.size()))
-    throw t.error_at(n, key, "axle " + std::to_string(*v) + " does not exist (1.." +
-                                 std::to_string(axles.size()) + ")");
+    throw t.error_at(
+        n, key,
+        "axle " + std::to_string(*v) + " does not exist (1.." + std::to_string(axles.size()) + ")");
   if (!axles[static_cast<std::size_t>(*v - 1)].driven)
     throw t.error_at(n, key, "axle " + std::to_string(*v) + " is not driven");
   return static_cast<int>(*v - 1);
@@ -57,8 +58,7 @@ void read_between(StrictTable& t, const std::vector<AxleParams>& axles, Differen
 }
 
 DifferentialKind read_kind(StrictTable& t) {
-  const std::string k =
-      t.choice("kind", "open", {"open", "locked", "viscous", "limited_slip"});
+  const std::string k = t.choice("kind", "open", {"open", "locked", "viscous", "limited_slip"});
   if (k == "locked") return DifferentialKind::kLocked;
   if (k == "viscous") return DifferentialKind::kViscous;
   if (k == "limited_slip") return DifferentialKind::kLimitedSlip;
@@ -81,8 +81,9 @@ DifferentialParams read_one(StrictTable t, const std::vector<AxleParams>& axles)
     d.preload_nm = t.number_in("preload_nm", 0.0, 0, 1e5);
     d.bias_ratio = t.number_in("bias_ratio", 1.0, 1, 20);
     if (d.preload_nm == 0 && d.bias_ratio == 1)
-      throw t.error("preload_nm", "a limited-slip differential needs preload_nm > 0 or "
-                                  "bias_ratio > 1 (else it is open)");
+      throw t.error("preload_nm",
+                    "a limited-slip differential needs preload_nm > 0 or "
+                    "bias_ratio > 1 (else it is open)");
   }
   d.lockable = t.boolean("lockable", false);
   t.finish();
@@ -109,7 +110,8 @@ void check_tree(StrictTable& t, const std::vector<DifferentialParams>& ds,
   for (const DifferentialParams& d : ds) {
     if (d.axle >= 0) {
       if (std::find(across.begin(), across.end(), d.axle) != across.end())
-        throw t.error("differential", "axle " + std::to_string(d.axle + 1) + " has two differentials across it");
+        throw t.error("differential",
+                      "axle " + std::to_string(d.axle + 1) + " has two differentials across it");
       across.push_back(d.axle);
     } else {
       if (std::find(groups.begin(), groups.end(), axles_of(d)) != groups.end())
@@ -118,30 +120,33 @@ void check_tree(StrictTable& t, const std::vector<DifferentialParams>& ds,
     }
   }
   if (driven.size() > 1 && std::find(groups.begin(), groups.end(), driven) == groups.end())
-    throw t.error("differential", "the driven axles need one differential between all of them "
-                                  "(e.g. between = [1, 2]), the root of the drive train");
+    throw t.error("differential",
+                  "the driven axles need one differential between all of them "
+                  "(e.g. between = [1, 2]), the root of the drive train");
   std::vector<std::vector<int>> fed;
   std::vector<int> fed_axles;
   for (const DifferentialParams& d : ds) {
     for (std::vector<int> side : {d.side_a_axles, d.side_b_axles}) {
       if (side.size() == 1) {
         if (std::find(fed_axles.begin(), fed_axles.end(), side[0]) != fed_axles.end())
-          throw t.error("differential", "axle " + std::to_string(side[0] + 1) +
-                                            " is a side of two differentials");
+          throw t.error("differential",
+                        "axle " + std::to_string(side[0] + 1) + " is a side of two differentials");
         fed_axles.push_back(side[0]);
       }
       if (side.size() < 2) continue;
       if (std::find(groups.begin(), groups.end(), side) == groups.end())
-        throw t.error("differential", "no differential is between the axles of a side of more "
-                                      "than one axle (add one between them)");
+        throw t.error("differential",
+                      "no differential is between the axles of a side of more "
+                      "than one axle (add one between them)");
       if (std::find(fed.begin(), fed.end(), side) != fed.end())
         throw t.error("differential", "a group of axles is a side of two differentials");
       fed.push_back(side);
     }
   }
   if (fed.size() + 1 != groups.size() && !groups.empty())
-    throw t.error("differential", "every differential between axles but the root must be a "
-                                  "side of another");
+    throw t.error("differential",
+                  "every differential between axles but the root must be a "
+                  "side of another");
   const std::size_t implicit = driven.size() - across.size();
   if (ds.size() + implicit > static_cast<std::size_t>(model::kMaxDifferentials))
     throw t.error("differential", "at most " + std::to_string(model::kMaxDifferentials) +

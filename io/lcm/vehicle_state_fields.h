@@ -151,8 +151,8 @@ struct VehicleStateFields {
 
   /// Per differential of the first unit (num_diffs; 0 without [[drivetrain.differential]]).
   static constexpr ArrayField<S, D> kDiff[] = {
-      {"diff_input_speed_radps", "rad/s", member<&D::input_speed_radps>,
-       &S::diff_input_speed_radps, "input_speed_radps"},
+      {"diff_input_speed_radps", "rad/s", member<&D::input_speed_radps>, &S::diff_input_speed_radps,
+       "input_speed_radps"},
       {"diff_output_a_speed_radps", "rad/s", member<&D::output_a_speed_radps>,
        &S::diff_output_a_speed_radps, "output_a_speed_radps"},
       {"diff_output_b_speed_radps", "rad/s", member<&D::output_b_speed_radps>,
@@ -166,9 +166,8 @@ struct VehicleStateFields {
   /// The message's frame, written by the builder and rig-log2csv themselves: the cycle's
   /// timing (io::CycleTiming), the group counts and each wheel's unit.
   static constexpr std::string_view kFrame[] = {
-      "sim_time_s",    "monotonic_ns", "cycle",      "lateness_ns", "compute_ns",
-      "deadline_miss", "num_units",    "num_wheels", "wheel_unit",  "num_joints",
-      "num_diffs",
+      "sim_time_s", "monotonic_ns", "cycle",      "lateness_ns", "compute_ns", "deadline_miss",
+      "num_units",  "num_wheels",   "wheel_unit", "num_joints",  "num_diffs",
   };
 };
 

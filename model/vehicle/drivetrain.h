@@ -8,8 +8,8 @@
 
 #include "model/solver/mechanical_block.h"
 #include "model/vehicle/driven_shafts.h"
-#include "model/vehicle/vehicle_params.h"
 #include "model/vehicle/vehicle_inputs.h"
+#include "model/vehicle/vehicle_params.h"
 #include "model/vehicle/vehicle_workspace.h"
 
 namespace rig::model::vehicle {

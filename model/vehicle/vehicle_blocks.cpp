@@ -90,8 +90,7 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
   }
   if (differentials_) {
     work_.differential_count = differentials_->tree().count;  // reported from the start
-    shaft_stepper_ =
-        std::make_unique<solver::ForceElementStepper<Eigen::Dynamic>>(*differentials_);
+    shaft_stepper_ = std::make_unique<solver::ForceElementStepper<Eigen::Dynamic>>(*differentials_);
     sequence_.add_stage(*shaft_stepper_);
   }
   if (driven_shafts_ != nullptr) sequence_.add_stage(drivetrain_stepper_);
@@ -157,7 +156,8 @@ void VehicleBlocks::update_outputs() noexcept {
   work_.engine_torque_nm =
       delivered_engine_torque_nm(p_.drivetrain, inputs_.throttle, drivetrain_.engine_speed_radps(),
                                  work_.engine_torque_cut_nm, inputs_.ignition_on);
-  if (differentials_) differentials_->speeds(drivetrain_.carrier_speed_radps(), work_.differentials);
+  if (differentials_)
+    differentials_->speeds(drivetrain_.carrier_speed_radps(), work_.differentials);
 }
 
 }  // namespace rig::model::vehicle

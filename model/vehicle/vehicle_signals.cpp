@@ -163,7 +163,8 @@ void fill_report(const VehicleState& state, const VehicleInputs& in, const Vehic
   report.joint_count = 0;
   report.differential_count = work.differential_count;
   for (int j = 0; j < work.differential_count; ++j)
-    report.differentials[static_cast<std::size_t>(j)] = work.differentials[static_cast<std::size_t>(j)];
+    report.differentials[static_cast<std::size_t>(j)] =
+        work.differentials[static_cast<std::size_t>(j)];
 }
 
 void mark_slip_validity(double mask_speed_mps, UnitReport& unit) noexcept {

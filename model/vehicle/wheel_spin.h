@@ -11,8 +11,8 @@
 #include <array>
 
 #include "model/solver/stage.h"
-#include "model/vehicle/drivetrain.h"
 #include "model/vehicle/driven_shafts.h"
+#include "model/vehicle/drivetrain.h"
 
 namespace rig::model::vehicle {
 

@@ -126,9 +126,7 @@ bool decode_v2(const Event& event, State& msg) {
   return true;
 }
 
-bool v2_has_row(std::string_view name) {
-  return !name.starts_with("diff_") && name != "num_diffs";
-}
+bool v2_has_row(std::string_view name) { return !name.starts_with("diff_") && name != "num_diffs"; }
 
 constexpr VehicleStateLayout kCurrent{"rig.vehicle_state_t", decode_current, has_every_row};
 constexpr VehicleStateLayout kV1{"rig.vehicle_state_t (v1: before the wheel_road_ fields)",

@@ -27,7 +27,8 @@ void DifferentialShafts::begin_step(const VehicleInputs& inputs) noexcept {
     double input_nm = 0;  // the input torque of the step's start: its shafts' last torques
     for (int i = 0; i < tree_.leaf_count; ++i) {
       if (tree_.side(i, j) != 0)
-        input_nm += state_.shaft_torque_nm[static_cast<std::size_t>(tree_.wheel[static_cast<std::size_t>(i)])];
+        input_nm += state_.shaft_torque_nm[static_cast<std::size_t>(
+            tree_.wheel[static_cast<std::size_t>(i)])];
     }
     const double sensing = (d.bias_ratio - 1.0) / (d.bias_ratio + 1.0);
     capacity_nm_[k] = 0.5 * (d.preload_nm + sensing * std::abs(input_nm));  // couple = T_L / 2
@@ -73,7 +74,8 @@ void DifferentialShafts::clutches(const LeafVector& x, std::array<bool, kMaxDiff
     const auto pp = static_cast<std::size_t>(p);
     bb[pp] = b(at[pp]);
     cc[pp] = capacity_nm_[static_cast<std::size_t>(at[pp])];
-    for (int q = 0; q < m; ++q) ww[pp][static_cast<std::size_t>(q)] = w(at[pp], at[static_cast<std::size_t>(q)]);
+    for (int q = 0; q < m; ++q)
+      ww[pp][static_cast<std::size_t>(q)] = w(at[pp], at[static_cast<std::size_t>(q)]);
   }
   const solver::FrictionSolution s = solver::solve_friction(ww, bb, cc, m, 1.0);
   for (int p = 0; p < m; ++p) {
@@ -89,7 +91,8 @@ void DifferentialShafts::solve(const Vector& s, double carrier_radps,
                                ShaftSolution& out) const noexcept {
   LeafVector x = LeafVector::Zero();
   for (int i = 0; i < tree_.leaf_count; ++i) {
-    const double spin = state_.spin_radps[static_cast<std::size_t>(tree_.wheel[static_cast<std::size_t>(i)])];
+    const double spin =
+        state_.spin_radps[static_cast<std::size_t>(tree_.wheel[static_cast<std::size_t>(i)])];
     x(i) = c_ * s(i) + d_ * (carrier_radps - spin);
   }
   out.fixed = locked_;
@@ -109,7 +112,8 @@ void DifferentialShafts::rate(const Vector& s, Vector& f) const noexcept {
   solve(s, work_.carrier_speed_radps, sol);
   const LeafVector side = tree_.g * sol.delta_radps;
   for (int i = 0; i < tree_.leaf_count; ++i) {
-    const double spin = state_.spin_radps[static_cast<std::size_t>(tree_.wheel[static_cast<std::size_t>(i)])];
+    const double spin =
+        state_.spin_radps[static_cast<std::size_t>(tree_.wheel[static_cast<std::size_t>(i)])];
     f(i) = work_.carrier_speed_radps + side(i) - spin;
   }
 }
@@ -122,9 +126,9 @@ bool DifferentialShafts::rate_jacobian(const Vector& s, Matrix& df_ds) const noe
   return true;
 }
 
-void DifferentialShafts::wheel_torques(double carrier_radps, double h,
-                                       std::array<double, kMaxWheels>& torque_nm,
-                                       std::array<double, kMaxWheels>& added_inertia_kgm2) const noexcept {
+void DifferentialShafts::wheel_torques(
+    double carrier_radps, double h, std::array<double, kMaxWheels>& torque_nm,
+    std::array<double, kMaxWheels>& added_inertia_kgm2) const noexcept {
   ShaftSolution sol;
   solve(state_.shaft_twist_rad, carrier_radps, sol);
   for (int i = 0; i < tree_.leaf_count; ++i) {
@@ -140,8 +144,8 @@ double DifferentialShafts::carrier_torque_nm(double carrier_radps) const noexcep
   return sol.torque_nm.sum();
 }
 
-void DifferentialShafts::speeds(double carrier_radps,
-                                std::array<DifferentialReport, kMaxDifferentials>& out) const noexcept {
+void DifferentialShafts::speeds(
+    double carrier_radps, std::array<DifferentialReport, kMaxDifferentials>& out) const noexcept {
   ShaftSolution sol;
   solve(state_.shaft_twist_rad, carrier_radps, sol);
   for (int j = 0; j < tree_.count; ++j) {

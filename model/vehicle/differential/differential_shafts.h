@@ -31,11 +31,10 @@ using DiffVector = Eigen::Matrix<double, kMaxDifferentials, 1>;
 struct ShaftSolution {
   DiffVector delta_radps = DiffVector::Zero();
   LeafVector torque_nm = LeafVector::Zero();  ///< per leaf (driven wheel in the tree's order)
-  Eigen::Matrix<double, kMaxLeaves, kMaxLeaves> s = Eigen::Matrix<double, kMaxLeaves,
-                                                                  kMaxLeaves>::Zero();
+  Eigen::Matrix<double, kMaxLeaves, kMaxLeaves> s =
+      Eigen::Matrix<double, kMaxLeaves, kMaxLeaves>::Zero();
   std::array<bool, kMaxDifferentials> fixed{};  ///< locked, or its clutch sticks
 };
-
 
 class DifferentialShafts final : public solver::ForceElement<Eigen::Dynamic>, public DrivenShafts {
  public:

@@ -32,8 +32,8 @@ int differential_count(const VehicleParams& p) noexcept {
   if (ds.empty()) return 0;
   int count = static_cast<int>(ds.size());
   for (int a = 0; a < static_cast<int>(p.axles.size()); ++a) {
-    const bool named = std::any_of(ds.begin(), ds.end(),
-                                   [a](const DifferentialParams& d) { return d.axle == a; });
+    const bool named =
+        std::any_of(ds.begin(), ds.end(), [a](const DifferentialParams& d) { return d.axle == a; });
     if (p.axles[static_cast<std::size_t>(a)].driven && !named) ++count;
   }
   return count;

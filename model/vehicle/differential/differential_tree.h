@@ -26,16 +26,16 @@ using LeafMatrix = Eigen::Matrix<double, kMaxLeaves, kMaxDifferentials>;
 using DiffMatrix = Eigen::Matrix<double, kMaxDifferentials, kMaxDifferentials>;
 
 struct DifferentialTree {
-  int leaf_count = 0;                      ///< driven wheels
-  std::array<int, kMaxLeaves> wheel{};     ///< leaf i's wheel (front to rear, left before right)
-  int count = 0;                           ///< differentials: the configured, then implicit open
-                                           ///< axle differentials of driven axles not named
+  int leaf_count = 0;                   ///< driven wheels
+  std::array<int, kMaxLeaves> wheel{};  ///< leaf i's wheel (front to rear, left before right)
+  int count = 0;                        ///< differentials: the configured, then implicit open
+                                        ///< axle differentials of driven axles not named
   std::array<DifferentialParams, kMaxDifferentials> params{};  ///< per differential
-  LeafMatrix g = LeafMatrix::Zero();       ///< w_side = w_c 1 + G delta (unused parts zero)
+  LeafMatrix g = LeafMatrix::Zero();          ///< w_side = w_c 1 + G delta (unused parts zero)
   DiffMatrix input_row = DiffMatrix::Zero();  ///< w_in_j = w_c + input_row.row(j) delta
   /// leaf i lies under side a (1) / side b (-1) of differential j, or not (0).
-  Eigen::Matrix<int, kMaxLeaves, kMaxDifferentials> side = Eigen::Matrix<int, kMaxLeaves,
-                                                                        kMaxDifferentials>::Zero();
+  Eigen::Matrix<int, kMaxLeaves, kMaxDifferentials> side =
+      Eigen::Matrix<int, kMaxLeaves, kMaxDifferentials>::Zero();
 };
 
 /// How many differentials the tree of p has (the configured and the implicit open ones across

@@ -27,8 +27,8 @@ const std::string kSedan4x4 = kDir + "/config/maneuvers/mu-split-acceleration-4x
 // Inputs: 14 of unit 1 (issue 17: the two differential locks) and per unit 2 circuits and one
 // pressure per wheel.
 constexpr std::size_t count(std::initializer_list<int> axles, int joints, int differentials = 0) {
-  std::size_t n = 14 + 12 + 5 * static_cast<std::size_t>(joints) +
-                  4 * static_cast<std::size_t>(differentials);
+  std::size_t n =
+      14 + 12 + 5 * static_cast<std::size_t>(joints) + 4 * static_cast<std::size_t>(differentials);
   // per wheel: 19, and the road under it (issue 16: road_z_m, road_normal_x/y/z, road_mu)
   for (const int a : axles) n += 2 + 15 + static_cast<std::size_t>(2 * a) * (19 + 5);
   return n;

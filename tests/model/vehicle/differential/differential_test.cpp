@@ -142,7 +142,10 @@ TEST(Differential, LockedHighMuWheelCarriesTheRest) {
     // the dry wheel the rest of the input torque, up to its traction
     EXPECT_NEAR(tr, traction_torque_nm(p, now, before, kRearRight), 0.05 * std::abs(tl));
     EXPECT_NEAR(tl, traction_torque_nm(p, now, before, kRearLeft), 0.05 * std::abs(tl));
-    EXPECT_LT(tl * wheel(now, kRearLeft).rolling_radius_m, 1e9);
+    // up to its traction: the dry wheel's force within its tire's F_M at mu 1
+    const WheelReport& dry = wheel(now, kRearLeft);
+    EXPECT_LE(dry.force_x_n,
+              tire::characteristic_at(p.axles[1].tire.tmeasy, dry.tire_load_n, 1.0).x.max_force_n);
     max_high = std::max(max_high, tl);
     max_low = std::max(max_low, tr);
   });
@@ -161,7 +164,8 @@ TEST(Differential, LimitedSlipTorqueDifferenceIsTheLockingTorque) {
     const double t_in = wheel(before, kRearLeft).drive_torque_nm +
                         wheel(before, kRearRight).drive_torque_nm;  // the step's start
     const double locking = kPreload + (kBias - 1) / (kBias + 1) * std::abs(t_in);
-    const double diff = wheel(now, kRearLeft).drive_torque_nm - wheel(now, kRearRight).drive_torque_nm;
+    const double diff =
+        wheel(now, kRearLeft).drive_torque_nm - wheel(now, kRearRight).drive_torque_nm;
     // the slower (dry, left) wheel gets the more
     EXPECT_NEAR(diff, locking, 1e-9 * locking);
     EXPECT_GT(now.differentials[0].output_b_speed_radps, now.differentials[0].output_a_speed_radps);
@@ -240,7 +244,8 @@ TEST(Differential, DriverLocksTheTandem) {
 Inputs circle(double wheel_angle_rad, double v_mps) {
   return [=](const VehicleModel&, Signals& s) {
     s[Signal::kSteeringWheelAngleCmd] = wheel_angle_rad;
-    s[Signal::kThrottlePedal] = std::clamp(0.15 + 0.5 * (v_mps - s[Signal::kVehicleSpeed]), 0.0, 1.0);
+    s[Signal::kThrottlePedal] =
+        std::clamp(0.15 + 0.5 * (v_mps - s[Signal::kVehicleSpeed]), 0.0, 1.0);
   };
 }
 
@@ -253,7 +258,8 @@ Circle steady_circle(const VehicleParams& p, double wheel_angle_rad, double v_mp
   VehicleModel m(p, 1e-3);
   m.set_forward_speed(v_mps);
   Circle c{};
-  drive(m, 10.0, circle(wheel_angle_rad, v_mps), [](const ModelReport&, const ModelReport&, double) {});
+  drive(m, 10.0, circle(wheel_angle_rad, v_mps),
+        [](const ModelReport&, const ModelReport&, double) {});
   m.fill_report(c.r);
   c.v_mps = c.r.units[0].velocity_mps[0];
   c.yaw_radps = c.r.units[0].angular_velocity_radps[2];
@@ -363,8 +369,9 @@ VehicleParams six_by_six() {
   }
   const auto front = text.find("driven = false");
   text.replace(front, 14, "driven = true");
-  text += "\n[[drivetrain.differential]]\nbetween = [[1], [2, 3]]\nsplit = 0.3\n"
-          "\n[[drivetrain.differential]]\nbetween = [2, 3]\n";
+  text +=
+      "\n[[drivetrain.differential]]\nbetween = [[1], [2, 3]]\nsplit = 0.3\n"
+      "\n[[drivetrain.differential]]\nbetween = [2, 3]\n";
   std::ofstream(file) << text;
   return io::config::load_vehicle_file(file);
 }
@@ -417,8 +424,8 @@ TEST(Differential, FourByFourOnSplitMuIsStableAndAllocationFree) {
     for (int i = 0; i < 4; ++i) {
       max_torque = std::max(max_torque, std::abs(wheel(now, i).drive_torque_nm));
       if (k != 2001 && k != 3500)  // (the lock's own steps)
-        max_jump = std::max(max_jump, std::abs(wheel(now, i).drive_torque_nm -
-                                               wheel(before, i).drive_torque_nm));
+        max_jump = std::max(
+            max_jump, std::abs(wheel(now, i).drive_torque_nm - wheel(before, i).drive_torque_nm));
     }
     before = now;
   }
