@@ -11,6 +11,7 @@ namespace rig::model {
 inline constexpr int kMaxUnits = 4;           ///< vehicles in a combination
 inline constexpr int kMaxWheelsPerUnit = 12;  ///< up to 6 axles with 2 wheels
 inline constexpr int kMaxJoints = 3;          ///< couplings between units
+inline constexpr int kMaxDifferentials = 8;   ///< of a drive train (model/vehicle/differential)
 
 struct WheelReport {
   double spin_radps = 0;      ///< wheel spin rate
@@ -75,6 +76,15 @@ struct DrivetrainReport {
   std::int32_t gear = 0;
 };
 
+/// A configured differential (model/vehicle/differential/README.md): its speeds at the wheels'
+/// scale (after the final drive) and whether it turns as one.
+struct DifferentialReport {
+  double input_speed_radps = 0;
+  double output_a_speed_radps = 0;  ///< side a: the left wheel, or the first group of axles
+  double output_b_speed_radps = 0;  ///< side b: the right wheel, or the second group
+  std::int32_t locked = 0;          ///< 1: locked (by its kind or the driver) or its clutch sticks
+};
+
 struct JointReport {
   std::array<double, 3> force_n{};  ///< constraint force on the leading unit, road frame
   double violation_m = 0;           ///< |g|
@@ -89,6 +99,10 @@ struct ModelReport {
   std::array<UnitReport, kMaxUnits> units{};
   SteeringReport steering{};
   DrivetrainReport drivetrain{};
+  /// The first unit's differentials as configured ([[drivetrain.differential]], then the
+  /// implicit open axle differentials); 0 without any configured (open differentials throughout).
+  std::int32_t differential_count = 0;
+  std::array<DifferentialReport, kMaxDifferentials> differentials{};
   std::array<double, 4> brake_pressure_pa{};  ///< FL, FR, RL, RR of the first unit
   std::int32_t joint_count = 0;
   std::array<JointReport, kMaxJoints> joints{};

@@ -33,6 +33,9 @@ enum class Signal : std::uint16_t {
   kRackPositionCmd,                 ///< steer-by-wire: road-wheel actuator rack position [m]
   kRackPositionMeasured,            ///< rack-in-the-loop: the real rack's travel [m]
   kRackSpeedMeasured,               ///< rack-in-the-loop: the real rack's speed [m/s]
+  // the driver's differential locks (issue 17; model/vehicle/differential/README.md)
+  kDifferentialLockBetweenCmd,  ///< 1: lock every lockable centre / inter-axle differential [-]
+  kDifferentialLockAxleCmd,     ///< 1: lock every lockable cross-axle differential [-]
   // ---- outputs ----
   kVehicleSpeed,        ///< longitudinal speed of the (first) unit's CG [m/s]
   kWheelSpeedFL,        ///< wheel spin rate, front left [rad/s]
@@ -88,6 +91,8 @@ inline constexpr std::array<SignalInfo, kSignalCount> kSignalTable{{
     {Signal::kRackPositionCmd, "rack_position_cmd_m", "m", true},
     {Signal::kRackPositionMeasured, "rack_position_measured_m", "m", true},
     {Signal::kRackSpeedMeasured, "rack_speed_measured_mps", "m/s", true},
+    {Signal::kDifferentialLockBetweenCmd, "differential_lock_between_cmd", "1", true},
+    {Signal::kDifferentialLockAxleCmd, "differential_lock_axle_cmd", "1", true},
     {Signal::kVehicleSpeed, "vehicle_speed_mps", "m/s", false},
     {Signal::kWheelSpeedFL, "wheel_speed_fl_radps", "rad/s", false},
     {Signal::kWheelSpeedFR, "wheel_speed_fr_radps", "rad/s", false},
@@ -158,6 +163,9 @@ constexpr InputRange input_range(Signal s) {
       return {-0.3, 0.3};
     case Signal::kRackSpeedMeasured:
       return {-5.0, 5.0};
+    case Signal::kDifferentialLockBetweenCmd:
+    case Signal::kDifferentialLockAxleCmd:
+      return {0.0, 1.0, true};
     default:
       return {0.0, 0.0};  // outputs: no source sets them
   }

@@ -9,6 +9,7 @@
 #include "io/config/config_error.h"
 #include "io/config/road_config.h"
 #include "io/config/strict_table.h"
+#include "model/vehicle/differential/differential_tree.h"
 #include "rig/rt/thread_setup.h"
 
 namespace rig {
@@ -206,13 +207,19 @@ void check_override_files(const io::config::Overrides& overrides, const ModelSet
 io::signals::ModelShape model_shape(const ModelSettings& model) {
   io::signals::ModelShape shape;
   shape.axle_count = {1, 0, 0, 0};  // the quarter car
-  if (model.vehicle) shape.axle_count[0] = static_cast<int>(model.vehicle->params.axles.size());
+  if (model.vehicle) {
+    shape.axle_count[0] = static_cast<int>(model.vehicle->params.axles.size());
+    shape.differential_count =
+        model::vehicle::differential::differential_count(model.vehicle->params);
+  }
   if (model.combination) {
     const auto& units = model.combination->units;
     shape.unit_count = static_cast<int>(units.size());
     for (std::size_t k = 0; k < units.size() && k < shape.axle_count.size(); ++k)
       shape.axle_count[k] = static_cast<int>(units[k].axles.size());
     shape.joint_count = static_cast<int>(model.combination->joints.size());
+    if (!units.empty())
+      shape.differential_count = model::vehicle::differential::differential_count(units[0]);
   }
   return shape;
 }

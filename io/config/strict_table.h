@@ -71,6 +71,9 @@ class StrictTable {
   /// Throws if the array at `key` has more than `max_entries` entries.
   void check_length(std::string_view key, const toml::array& array, std::size_t max_entries) const;
 
+  /// The raw node at a required key, marked as read (for values of more than one shape).
+  [[nodiscard]] const toml::node& node(std::string_view key) { return require(key); }
+
   [[nodiscard]] StrictTable table(std::string_view key);
   [[nodiscard]] std::optional<StrictTable> optional_table(std::string_view key);
 

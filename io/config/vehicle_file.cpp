@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include "io/config/differential_config.h"
 #include "model/report.h"
 
 namespace rig::io::config {
@@ -284,7 +285,8 @@ void check_shift_speeds(StrictTable& t, const model::vehicle::DrivetrainParams& 
     throw t.error("upshift_speed_high_radps", "must not exceed max_speed_radps");
 }
 
-void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
+void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d,
+                     const std::vector<model::vehicle::AxleParams>& axles) {
   d.full_load_speed_radps = t.numbers("full_load_speed_radps", kMaxCurvePoints);
   d.full_load_torque_nm = t.numbers("full_load_torque_nm", kMaxCurvePoints);
   if (d.full_load_speed_radps.size() < 2 ||
@@ -344,6 +346,7 @@ void read_drivetrain(StrictTable t, model::vehicle::DrivetrainParams& d) {
   check_shift_speeds(t, d);
   if (d.shift_time_s > d.shift_dwell_s)
     throw t.error("shift_time_s", "must not exceed shift_dwell_s (a shift ends before the next)");
+  d.differentials = read_differentials(t, axles);
   t.finish();
 }
 
@@ -450,7 +453,7 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file,
     throw t.error("steering", "a vehicle with a steered axle needs a [steering] table");
   }
   if (auto d = t.optional_table("drivetrain")) {
-    read_drivetrain(std::move(*d), p.drivetrain);
+    read_drivetrain(std::move(*d), p.drivetrain, p.axles);
   } else if (any_driven) {
     throw t.error("drivetrain", "a vehicle with a driven axle needs a [drivetrain] table");
   }

@@ -86,6 +86,16 @@ void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg) {
   msg.num_joints = joints;
   size_arrays<Fields::kJoint>(msg, nj);
   for (std::size_t j = 0; j < nj; ++j) set_elements<Fields::kJoint>(msg, j, r.joints[j]);
+
+  const std::int32_t diffs = clamp_count(r.differential_count, model::kMaxDifferentials);
+  const auto nd = static_cast<std::size_t>(diffs);
+  msg.num_diffs = diffs;
+  size_arrays<Fields::kDiff>(msg, nd);
+  size_arrays<Fields::kDiffFlag>(msg, nd);
+  for (std::size_t j = 0; j < nd; ++j) {
+    set_elements<Fields::kDiff>(msg, j, r.differentials[j]);
+    set_elements<Fields::kDiffFlag>(msg, j, r.differentials[j]);
+  }
 }
 
 namespace {

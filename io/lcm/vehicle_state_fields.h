@@ -27,6 +27,7 @@ struct VehicleStateFields {
   using U = model::UnitReport;
   using W = model::WheelReport;
   using J = model::JointReport;
+  using D = model::DifferentialReport;
   using Steering = model::SteeringReport;
   using Drivetrain = model::DrivetrainReport;
 
@@ -148,11 +149,25 @@ struct VehicleStateFields {
       {"joint_rod_force_n", "N", member<&J::rod_force_n>, &S::joint_rod_force_n, "rod_force_n"},
   };
 
+  /// Per differential of the first unit (num_diffs; 0 without [[drivetrain.differential]]).
+  static constexpr ArrayField<S, D> kDiff[] = {
+      {"diff_input_speed_radps", "rad/s", member<&D::input_speed_radps>, &S::diff_input_speed_radps,
+       "input_speed_radps"},
+      {"diff_output_a_speed_radps", "rad/s", member<&D::output_a_speed_radps>,
+       &S::diff_output_a_speed_radps, "output_a_speed_radps"},
+      {"diff_output_b_speed_radps", "rad/s", member<&D::output_b_speed_radps>,
+       &S::diff_output_b_speed_radps, "output_b_speed_radps"},
+  };
+  /// Per differential, integers: 1 locked, 0 not.
+  static constexpr ArrayField<S, D, std::int32_t> kDiffFlag[] = {
+      {"diff_locked", "1", member<&D::locked>, &S::diff_locked, "locked"},
+  };
+
   /// The message's frame, written by the builder and rig-log2csv themselves: the cycle's
   /// timing (io::CycleTiming), the group counts and each wheel's unit.
   static constexpr std::string_view kFrame[] = {
-      "sim_time_s",    "monotonic_ns", "cycle",      "lateness_ns", "compute_ns",
-      "deadline_miss", "num_units",    "num_wheels", "wheel_unit",  "num_joints",
+      "sim_time_s", "monotonic_ns", "cycle",      "lateness_ns", "compute_ns", "deadline_miss",
+      "num_units",  "num_wheels",   "wheel_unit", "num_joints",  "num_diffs",
   };
 };
 

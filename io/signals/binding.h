@@ -33,7 +33,9 @@ struct ReportReader {
     kUnit,
     kWheel,
     kWheelFlag,
-    kJoint
+    kJoint,
+    kDiff,
+    kDiffFlag
   };
   Group group = Group::kNone;
   std::uint8_t unit = 0;   ///< the unit (kUnit, kWheel, kWheelFlag)
@@ -44,6 +46,8 @@ struct ReportReader {
   double (*wheel)(const model::WheelReport&) = nullptr;
   std::int8_t (*wheel_flag)(const model::WheelReport&) = nullptr;
   double (*joint)(const model::JointReport&) = nullptr;
+  double (*diff)(const model::DifferentialReport&) = nullptr;
+  std::int32_t (*diff_flag)(const model::DifferentialReport&) = nullptr;
 
   [[nodiscard]] double read(const model::ModelReport& r) const noexcept {
     const auto& u = r.units[unit];
@@ -60,6 +64,10 @@ struct ReportReader {
         return static_cast<double>(wheel_flag(u.wheels[index]));
       case Group::kJoint:
         return joint(r.joints[index]);
+      case Group::kDiff:
+        return diff(r.differentials[index]);
+      case Group::kDiffFlag:
+        return static_cast<double>(diff_flag(r.differentials[index]));
       case Group::kNone:
         break;
     }

@@ -33,6 +33,8 @@ constexpr InputName kUnit1Inputs[] = {
     {Signal::kRackPositionCmd, "unit1.steering.rack_position_cmd_m"},
     {Signal::kRackPositionMeasured, "unit1.steering.rack_position_measured_m"},
     {Signal::kRackSpeedMeasured, "unit1.steering.rack_speed_measured_mps"},
+    {Signal::kDifferentialLockBetweenCmd, "unit1.drivetrain.differential_lock_between_cmd"},
+    {Signal::kDifferentialLockAxleCmd, "unit1.drivetrain.differential_lock_axle_cmd"},
 };
 
 /// The enum's outputs: the entry each one's name is an alias of ('#': the last axle).
@@ -120,6 +122,7 @@ Catalogue::Catalogue(const ModelShape& shape) : shape_(shape) {
                                   " axles per unit");
   }
   shape_.joint_count = std::clamp(shape.joint_count, 0, model::kMaxJoints);
+  shape_.differential_count = std::clamp(shape.differential_count, 0, model::kMaxDifferentials);
   add_inputs();
   add_outputs();
   add_aliases();
@@ -196,6 +199,23 @@ void Catalogue::add_outputs() {
       if (!row.quantity.empty())
         add(output("joint" + std::to_string(i + 1) + "." + std::string(row.quantity), row.unit,
                    rj));
+    }
+  }
+  add_differential_outputs();
+}
+
+void Catalogue::add_differential_outputs() {
+  for (int i = 0; i < shape_.differential_count; ++i) {
+    const std::string prefix = "unit1.drivetrain.diff" + std::to_string(i + 1) + ".";
+    ReportReader r{.group = Group::kDiff, .index = static_cast<std::uint8_t>(i)};
+    for (const auto& row : Fields::kDiff) {
+      r.diff = row.source;
+      add(output(prefix + std::string(row.quantity), row.unit, r));
+    }
+    r.group = Group::kDiffFlag;
+    for (const auto& row : Fields::kDiffFlag) {
+      r.diff_flag = row.source;
+      add(output(prefix + std::string(row.quantity), row.unit, r));
     }
   }
 }

@@ -7,6 +7,7 @@
 ///   unit<k>.<quantity>                        per unit body, and its brake circuits
 ///   unit1.steering.<quantity>, unit1.drivetrain.<quantity>
 ///   joint<i>.<quantity>                       per coupling of a combination
+///   unit1.drivetrain.diff<i>.<quantity>       per configured differential of the first unit
 ///
 /// with `unit<k>.wheel_fl|fr|rl|rr.<quantity>` aliases on two-axle units and the enum's names
 /// (model::kSignalTable, `vehicle_speed_mps`, ...) as aliases of their entries. Outputs come
@@ -34,6 +35,8 @@ struct ModelShape {
   int unit_count = 1;
   std::array<int, model::kMaxUnits> axle_count{2, 0, 0, 0};
   int joint_count = 0;  ///< couplings (unit_count - 1 for a combination)
+  /// The first unit's differentials (model::ModelReport::differential_count; 0: none configured).
+  int differential_count = 0;
 };
 
 struct Entry {
@@ -76,6 +79,7 @@ class Catalogue {
   void add(Entry e);
   void add_inputs();
   void add_outputs();
+  void add_differential_outputs();
   void add_aliases();
   void alias(std::string_view name, std::string alias_name);
 

@@ -55,7 +55,7 @@ double lockup_fraction(const DrivetrainParams& p, double turbine_radps,
 }
 
 Drivetrain::Drivetrain(const DrivetrainParams& p, VehicleState& state, const VehicleInputs& inputs,
-                       const VehicleWorkspace& work, const HalfShafts* shafts)
+                       const VehicleWorkspace& work, const DrivenShafts* shafts)
     : p_(p),
       state_(state),
       inputs_(inputs),
@@ -86,9 +86,7 @@ void Drivetrain::applied_forces(const Vector& y, const Vector& z, Vector& q) con
                                                work_.engine_torque_cut_nm, inputs_.ignition_on);
   const double tc = coupling_torque_nm(z(0), z(1));
   double shafts = 0;
-  if (shafts_ != nullptr) {
-    shafts = shafts_->count() * shafts_->shaft_torque_nm(shafts_->state_const(), z(1));
-  }
+  if (shafts_ != nullptr) shafts = shafts_->carrier_torque_nm(z(1));
   q(0) = te - tc;
   q(1) = p_.efficiency * work_.output_ratio * tc - shafts;
 }

@@ -7,8 +7,10 @@
 /// damping) enter M_VI through the stepper's finite differences of this 2-DOF block.
 
 #include "model/solver/mechanical_block.h"
-#include "model/vehicle/half_shafts.h"
+#include "model/vehicle/driven_shafts.h"
 #include "model/vehicle/vehicle_inputs.h"
+#include "model/vehicle/vehicle_params.h"
+#include "model/vehicle/vehicle_workspace.h"
 
 namespace rig::model::vehicle {
 
@@ -36,7 +38,7 @@ class Drivetrain final : public solver::MechanicalBlock<2> {
   /// Its coordinates and speeds are state.drivetrain_y, drivetrain_z; it reads the throttle and
   /// the step's frozen ratios, lock-up fraction and torque cut (workspace).
   Drivetrain(const DrivetrainParams& p, VehicleState& state, const VehicleInputs& inputs,
-             const VehicleWorkspace& work, const HalfShafts* shafts);
+             const VehicleWorkspace& work, const DrivenShafts* shafts);
   [[nodiscard]] Eigen::Index size() const noexcept override { return 2; }
   [[nodiscard]] Vector& coordinates() noexcept override { return state_.drivetrain_y; }
   [[nodiscard]] Vector& speeds() noexcept override { return state_.drivetrain_z; }
@@ -52,7 +54,7 @@ class Drivetrain final : public solver::MechanicalBlock<2> {
   VehicleState& state_;
   const VehicleInputs& inputs_;
   const VehicleWorkspace& work_;
-  const HalfShafts* shafts_;
+  const DrivenShafts* shafts_;
   double lockup_capacity_;  ///< [N m] (DrivetrainParams::lockup_capacity_nm or the engine's peak)
 };
 

@@ -33,4 +33,16 @@ bool HalfShafts::rate_jacobian(const Vector& s, Matrix& df_ds) const noexcept {
   return true;
 }
 
+void HalfShafts::wheel_torques(double carrier_radps, double h,
+                               std::array<double, kMaxWheels>& torque_nm,
+                               std::array<double, kMaxWheels>& added_inertia_kgm2) const noexcept {
+  const double t = shaft_torque_nm(state_const(), carrier_radps);
+  const double added = h * d_torque_d_carrier() / static_cast<double>(count());
+  for (Eigen::Index i = 0; i < n_; ++i) {
+    const auto k = static_cast<std::size_t>(wheels_[static_cast<std::size_t>(i)]);
+    torque_nm[k] = t;
+    added_inertia_kgm2[k] = added;
+  }
+}
+
 }  // namespace rig::model::vehicle

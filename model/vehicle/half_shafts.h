@@ -10,12 +10,13 @@
 #include <array>
 
 #include "model/solver/force_element.h"
+#include "model/vehicle/driven_shafts.h"
 #include "model/vehicle/vehicle_state.h"
 #include "model/vehicle/vehicle_workspace.h"
 
 namespace rig::model::vehicle {
 
-class HalfShafts final : public solver::ForceElement<Eigen::Dynamic> {
+class HalfShafts final : public solver::ForceElement<Eigen::Dynamic>, public DrivenShafts {
  public:
   /// @param driven_wheels indices of the driven wheels (at least one); the twists are
   /// state.shaft_twist_rad, the wheel spins state.spin_radps, the carrier speed the workspace's.
@@ -31,8 +32,16 @@ class HalfShafts final : public solver::ForceElement<Eigen::Dynamic> {
   /// dT / d w_c and dT / d w_i.
   [[nodiscard]] double d_torque_d_carrier() const noexcept { return d_; }
   [[nodiscard]] double d_torque_d_wheel() const noexcept { return -d_ / static_cast<double>(n_); }
-  [[nodiscard]] int count() const noexcept { return static_cast<int>(n_); }
-  [[nodiscard]] int wheel(int i) const noexcept { return wheels_[static_cast<std::size_t>(i)]; }
+  [[nodiscard]] int count() const noexcept override { return static_cast<int>(n_); }
+  [[nodiscard]] int wheel(int i) const noexcept override {
+    return wheels_[static_cast<std::size_t>(i)];
+  }
+  /// Every driven wheel the common torque, and h d / n.
+  void wheel_torques(double carrier_radps, double h, std::array<double, kMaxWheels>& torque_nm,
+                     std::array<double, kMaxWheels>& added_inertia_kgm2) const noexcept override;
+  [[nodiscard]] double carrier_torque_nm(double carrier_radps) const noexcept override {
+    return count() * shaft_torque_nm(state_const(), carrier_radps);
+  }
 
  private:
   VehicleState& state_;

@@ -18,8 +18,21 @@ solver::ArrowheadPartition framework_partition(const VehicleParams& p) {
 std::unique_ptr<HalfShafts> make_shafts(const VehicleParams& p, VehicleState& state,
                                         const VehicleWorkspace& work) {
   const DrivenWheels driven = driven_wheels(p);
-  if (driven.count == 0) return nullptr;
+  if (driven.count == 0 || !p.drivetrain.differentials.empty()) return nullptr;
   return std::make_unique<HalfShafts>(p.drivetrain, state, work, driven.wheel, driven.count);
+}
+
+std::unique_ptr<differential::DifferentialShafts> make_differentials(const VehicleParams& p,
+                                                                     VehicleState& state,
+                                                                     const VehicleWorkspace& work) {
+  if (driven_wheels(p).count == 0 || p.drivetrain.differentials.empty()) return nullptr;
+  return std::make_unique<differential::DifferentialShafts>(p, state, work);
+}
+
+template <typename A, typename B>
+DrivenShafts* either(const std::unique_ptr<A>& a, const std::unique_ptr<B>& b) {
+  if (a) return a.get();
+  return b.get();
 }
 
 }  // namespace
@@ -55,9 +68,11 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
       kinematics_(p),
       framework_(p, state, work),
       shafts_(make_shafts(p, state, work)),
-      drivetrain_(p.drivetrain, state, inputs, work, shafts_.get()),
+      differentials_(make_differentials(p, state, work)),
+      driven_shafts_(either(shafts_, differentials_)),
+      drivetrain_(p.drivetrain, state, inputs, work, driven_shafts_),
       steering_system_(make_steering_system(p.steering, state, inputs, work)),
-      wheel_stage_(p, state, inputs, work, shafts_.get(), drivetrain_),
+      wheel_stage_(p, state, inputs, work, driven_shafts_, drivetrain_),
       drivetrain_stepper_(drivetrain_),
       framework_stepper_(framework_, framework_partition(p)),
       sequence_(framework_stepper_) {
@@ -73,7 +88,12 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
     shaft_stepper_ = std::make_unique<solver::ForceElementStepper<Eigen::Dynamic>>(*shafts_);
     sequence_.add_stage(*shaft_stepper_);
   }
-  if (shafts_) sequence_.add_stage(drivetrain_stepper_);
+  if (differentials_) {
+    work_.differential_count = differentials_->tree().count;  // reported from the start
+    shaft_stepper_ = std::make_unique<solver::ForceElementStepper<Eigen::Dynamic>>(*differentials_);
+    sequence_.add_stage(*shaft_stepper_);
+  }
+  if (driven_shafts_ != nullptr) sequence_.add_stage(drivetrain_stepper_);
   // the steering block: the simple model's 2 DOF, or the enhanced model's system + knuckles
   if (p.steering.model == SteeringModel::kEnhanced) {
     enhanced_steering_ = std::make_unique<EnhancedSteering>(p, *steering_system_, state, work);
@@ -113,6 +133,7 @@ void VehicleBlocks::update_contacts(double lookahead_s) noexcept {
     tc.sliding_ratio = slip.sliding_ratio;
   }
   work_.carrier_speed_radps = drivetrain_.carrier_speed_radps();
+  if (differentials_) differentials_->begin_step(inputs_);  // locks and clutch capacities
 }
 
 void VehicleBlocks::update_outputs() noexcept {
@@ -135,6 +156,8 @@ void VehicleBlocks::update_outputs() noexcept {
   work_.engine_torque_nm =
       delivered_engine_torque_nm(p_.drivetrain, inputs_.throttle, drivetrain_.engine_speed_radps(),
                                  work_.engine_torque_cut_nm, inputs_.ignition_on);
+  if (differentials_)
+    differentials_->speeds(drivetrain_.carrier_speed_radps(), work_.differentials);
 }
 
 }  // namespace rig::model::vehicle

@@ -16,6 +16,7 @@
 #include "model/solver/mechanical_stepper.h"
 #include "model/solver/sequential_stepper.h"
 #include "model/tire/tmeasy_force_element.h"
+#include "model/vehicle/differential/differential_shafts.h"
 #include "model/vehicle/drivetrain.h"
 #include "model/vehicle/half_shafts.h"
 #include "model/vehicle/steering/column_steering.h"
@@ -81,7 +82,10 @@ class VehicleBlocks {
   VehicleWorkspace& work_;
   SuspensionKinematics kinematics_;
   VehicleFramework framework_;
-  std::unique_ptr<HalfShafts> shafts_;  ///< none without driven wheels
+  std::unique_ptr<HalfShafts> shafts_;  ///< none without driven wheels or with differentials
+  /// [[drivetrain.differential]] configured (and driven wheels): the tree instead of shafts_
+  std::unique_ptr<differential::DifferentialShafts> differentials_;
+  DrivenShafts* driven_shafts_;  ///< the one of the two, or none
   Drivetrain drivetrain_;
   std::unique_ptr<SteeringSystem> steering_system_;
   std::unique_ptr<SimpleSteering> simple_steering_;      ///< [steering] model = "simple"

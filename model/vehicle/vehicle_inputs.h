@@ -29,6 +29,10 @@ struct VehicleInputs {
   /// Ignition on or start (terminal 15 / 50): the engine runs and the EPS assists. Off or
   /// accessory: no combustion torque (the engine drags), no assist (boost curve nor input).
   bool ignition_on = true;
+  /// The driver's differential locks (model/vehicle/differential/README.md): every lockable
+  /// differential between axles / across an axle turns as one while set.
+  bool lock_between = false;
+  bool lock_axle = false;
   // ---- the steering bench (model/vehicle/steering/README.md) ----
   /// Steer-by-wire: the hand-wheel actuator's torque on the steering wheel (0 when not valid).
   double feedback_torque_cmd_nm = 0;

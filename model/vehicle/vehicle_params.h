@@ -10,6 +10,7 @@
 #include "model/kinematics/kinematic_table.h"
 #include "model/road/road.h"
 #include "model/tire/tmeasy_params.h"
+#include "model/vehicle/differential/differential_params.h"
 
 namespace rig::model::vehicle {
 
@@ -223,6 +224,9 @@ struct DrivetrainParams {
   /// takes the torque over) and an inertia phase (3/4: it slips the turbine to the new speed);
   /// 0: the ratio jumps.
   double shift_time_s = 0.4;
+  /// `[[drivetrain.differential]]` (model/vehicle/differential/README.md); empty: open
+  /// differentials throughout, every driven wheel the same torque (HalfShafts).
+  std::vector<differential::DifferentialParams> differentials;
 };
 
 /// Sprung mass (chassis) and aerodynamics.

@@ -48,6 +48,9 @@ VehicleInputs read_inputs(const VehicleParams& params, int unit, const Signals& 
   r.gear_request = static_cast<int>(std::lround(in(Signal::kGearRequest, 99.0)));
   // 0 off, 1 accessory: no engine, no assist; 2 on, 3 start (no starter: as on); unrouted: on
   r.ignition_on = std::lround(in(Signal::kIgnition, 2.0)) >= 2;
+  // the driver's differential locks: 1 locks, anything else (or not routed) leaves them open
+  r.lock_between = std::lround(in(Signal::kDifferentialLockBetweenCmd, 0.0)) == 1;
+  r.lock_axle = std::lround(in(Signal::kDifferentialLockAxleCmd, 0.0)) == 1;
   const auto valid = [&](Signal id) {
     return s.valid[index(id)] && std::isfinite(s.value[index(id)]);
   };
@@ -158,6 +161,10 @@ void fill_report(const VehicleState& state, const VehicleInputs& in, const Vehic
   report.brake_pressure_pa = {in.brake_pressure_pa[0], in.brake_pressure_pa[1],
                               in.brake_pressure_pa[n - 2], in.brake_pressure_pa[n - 1]};
   report.joint_count = 0;
+  report.differential_count = work.differential_count;
+  for (int j = 0; j < work.differential_count; ++j)
+    report.differentials[static_cast<std::size_t>(j)] =
+        work.differentials[static_cast<std::size_t>(j)];
 }
 
 void mark_slip_validity(double mask_speed_mps, UnitReport& unit) noexcept {

@@ -91,6 +91,9 @@ struct VehicleWorkspace {
   double torsion_bar_torque_nm = 0;
   double assist_torque_nm = 0;  ///< applied (input or boost curve)
   double engine_torque_nm = 0;
+  /// The configured differentials' speeds and locks at the end of the step (0: none configured).
+  int differential_count = 0;
+  std::array<DifferentialReport, kMaxDifferentials> differentials{};
 };
 
 }  // namespace rig::model::vehicle

@@ -10,7 +10,7 @@ namespace rig::model::vehicle {
 
 WheelSpinStage::WheelSpinStage(const VehicleParams& p, VehicleState& state,
                                const VehicleInputs& inputs, VehicleWorkspace& work,
-                               const HalfShafts* shafts, const Drivetrain& drivetrain)
+                               const DrivenShafts* shafts, const Drivetrain& drivetrain)
     : p_(p), state_(state), inputs_(inputs), work_(work), shafts_(shafts), drivetrain_(drivetrain) {
   if (shafts_ != nullptr) {
     for (int i = 0; i < shafts_->count(); ++i)
@@ -98,9 +98,8 @@ void WheelSpinStage::tie_rods(double h) noexcept {
 void WheelSpinStage::advance(double h) noexcept {
   tie_rods(h);
   work_.carrier_speed_radps = drivetrain_.carrier_speed_radps();  // newest (eq. 8 order)
-  double shaft_torque = 0;
   if (shafts_ != nullptr)
-    shaft_torque = shafts_->shaft_torque_nm(shafts_->state_const(), work_.carrier_speed_radps);
+    shafts_->wheel_torques(work_.carrier_speed_radps, h, shaft_torque_nm_, shaft_inertia_kgm2_);
   for (int i = 0; i < work_.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
     WheelWork& w = work_.wheels[k];
@@ -112,9 +111,8 @@ void WheelSpinStage::advance(double h) noexcept {
     // through the damping path (eq. 24, at the f of the start of the step)
     const tire::SpinForce fx = tire::spin_force(tire, contact, state_.tire_deflection_m[k]);
     double inertia = axle.tire.spin_inertia_kgm2 + h * r * fx.d_force_d_spin;
-    const double ts = driven_[k] ? shaft_torque : 0.0;
-    if (driven_[k])
-      inertia += h * shafts_->d_torque_d_carrier() / static_cast<double>(shafts_->count());
+    const double ts = driven_[k] ? shaft_torque_nm_[k] : 0.0;
+    if (driven_[k]) inertia += shaft_inertia_kgm2_[k];
     w.shaft_torque_nm = ts;
     const double other = ts - r * fx.long_force_n;
     // Stick prediction: the friction torque that makes w(k+1) = 0.

@@ -11,8 +11,8 @@
 #include <array>
 
 #include "model/solver/stage.h"
+#include "model/vehicle/driven_shafts.h"
 #include "model/vehicle/drivetrain.h"
-#include "model/vehicle/half_shafts.h"
 
 namespace rig::model::vehicle {
 
@@ -29,7 +29,7 @@ class WheelSpinStage final : public solver::Stage {
   /// Advances state.spin_radps and state.rack_at_wheel_m; writes the wheels' orientation,
   /// tie-rod, shaft and brake torques and the rack force into the workspace.
   WheelSpinStage(const VehicleParams& p, VehicleState& state, const VehicleInputs& inputs,
-                 VehicleWorkspace& work, const HalfShafts* shafts, const Drivetrain& drivetrain);
+                 VehicleWorkspace& work, const DrivenShafts* shafts, const Drivetrain& drivetrain);
   void advance(double h) noexcept override;
 
  private:
@@ -40,7 +40,9 @@ class WheelSpinStage final : public solver::Stage {
   const VehicleInputs& inputs_;
   VehicleWorkspace& work_;
   std::array<bool, kMaxWheels> driven_{};
-  const HalfShafts* shafts_;
+  const DrivenShafts* shafts_;
+  std::array<double, kMaxWheels> shaft_torque_nm_{};  ///< the step's, per wheel (workspace)
+  std::array<double, kMaxWheels> shaft_inertia_kgm2_{};
   const Drivetrain& drivetrain_;
 };
 

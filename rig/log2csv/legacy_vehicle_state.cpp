@@ -1,6 +1,7 @@
 #include "rig/log2csv/legacy_vehicle_state.h"
 
 #include "rig/vehicle_state_v1_t.hpp"
+#include "rig/vehicle_state_v2_t.hpp"
 
 namespace rig::log2csv {
 
@@ -8,6 +9,7 @@ namespace {
 
 using State = rig::vehicle_state_t;
 using V1 = rig::vehicle_state_v1_t;
+using V2 = rig::vehicle_state_v2_t;
 
 bool decode_current(const Event& event, State& msg) {
   return msg.decode(event.data, 0, static_cast<int>(event.size)) >= 0;
@@ -15,9 +17,11 @@ bool decode_current(const Event& event, State& msg) {
 
 bool has_every_row(std::string_view /*name*/) { return true; }
 
-// ---- v1: before the per-wheel road fields (issue 16) ----
+// ---- v1: before the per-wheel road fields (issue 16); v2: before the differentials (issue
+// 17). The members both share, then v2's road fields. ----
 
-void copy_frame_and_units(const V1& a, State& b) {
+template <typename Legacy>
+void copy_frame_and_units(const Legacy& a, State& b) {
   b.sim_time_s = a.sim_time_s;
   b.monotonic_ns = a.monotonic_ns;
   b.cycle = a.cycle;
@@ -42,7 +46,8 @@ void copy_frame_and_units(const V1& a, State& b) {
   b.unit_az_mps2 = a.unit_az_mps2;
 }
 
-void copy_wheels(const V1& a, State& b) {
+template <typename Legacy>
+void copy_wheels(const Legacy& a, State& b) {
   b.num_wheels = a.num_wheels;
   b.wheel_unit = a.wheel_unit;
   b.wheel_spin_radps = a.wheel_spin_radps;
@@ -65,7 +70,8 @@ void copy_wheels(const V1& a, State& b) {
   b.wheel_slip_valid = a.wheel_slip_valid;
 }
 
-void copy_vehicle_and_joints(const V1& a, State& b) {
+template <typename Legacy>
+void copy_vehicle_and_joints(const Legacy& a, State& b) {
   b.steering_wheel_angle_rad = a.steering_wheel_angle_rad;
   b.steering_wheel_speed_radps = a.steering_wheel_speed_radps;
   b.steering_wheel_torque_nm = a.steering_wheel_torque_nm;
@@ -102,11 +108,31 @@ bool decode_v1(const Event& event, State& msg) {
   return true;
 }
 
-bool v1_has_row(std::string_view name) { return !name.starts_with("wheel_road_"); }
+bool v1_has_row(std::string_view name) {
+  return !name.starts_with("wheel_road_") && !name.starts_with("diff_") && name != "num_diffs";
+}
+
+bool decode_v2(const Event& event, State& msg) {
+  V2 v2;
+  if (v2.decode(event.data, 0, static_cast<int>(event.size)) < 0) return false;
+  copy_frame_and_units(v2, msg);
+  copy_wheels(v2, msg);
+  msg.wheel_road_z_m = v2.wheel_road_z_m;
+  msg.wheel_road_normal_x = v2.wheel_road_normal_x;
+  msg.wheel_road_normal_y = v2.wheel_road_normal_y;
+  msg.wheel_road_normal_z = v2.wheel_road_normal_z;
+  msg.wheel_road_mu = v2.wheel_road_mu;
+  copy_vehicle_and_joints(v2, msg);
+  return true;
+}
+
+bool v2_has_row(std::string_view name) { return !name.starts_with("diff_") && name != "num_diffs"; }
 
 constexpr VehicleStateLayout kCurrent{"rig.vehicle_state_t", decode_current, has_every_row};
 constexpr VehicleStateLayout kV1{"rig.vehicle_state_t (v1: before the wheel_road_ fields)",
                                  decode_v1, v1_has_row};
+constexpr VehicleStateLayout kV2{"rig.vehicle_state_t (v2: before the diff_ fields)", decode_v2,
+                                 v2_has_row};
 
 }  // namespace
 
@@ -114,6 +140,7 @@ const VehicleStateLayout& current_vehicle_state_layout() { return kCurrent; }
 
 const VehicleStateLayout* legacy_vehicle_state_layout(std::int64_t hash) {
   if (hash == V1::getHash()) return &kV1;
+  if (hash == V2::getHash()) return &kV2;
   return nullptr;
 }
 

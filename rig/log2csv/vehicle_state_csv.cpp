@@ -104,6 +104,11 @@ class VehicleStateCsv final : public ChannelCsv {
     add_scalar_headers(h, Fields::kVehicleInt, has);
     h.emplace_back("num_joints");
     add_array_headers(h, Fields::kJoint, joints_, has);
+    if (has("num_diffs")) {  // not in v1 and v2 logs
+      h.emplace_back("num_diffs");
+      add_array_headers(h, Fields::kDiff, diffs_, has);
+      add_array_headers(h, Fields::kDiffFlag, diffs_, has);
+    }
     return join_columns(h);
   }
 
@@ -113,6 +118,7 @@ class VehicleStateCsv final : public ChannelCsv {
       units_ = group_size(msg_, Fields::kUnit);
       wheels_ = group_size(msg_, Fields::kWheel);
       joints_ = group_size(msg_, Fields::kJoint);
+      diffs_ = group_size(msg_, Fields::kDiff);
       sized_ = true;
     }
     line.add(event.timestamp_us);
@@ -131,6 +137,11 @@ class VehicleStateCsv final : public ChannelCsv {
     add_scalar_cells(line, msg_, Fields::kVehicleInt, has);
     line.add(std::int64_t{msg_.num_joints});
     add_array_cells(line, msg_, Fields::kJoint, joints_, has);
+    if (has("num_diffs")) {
+      line.add(std::int64_t{msg_.num_diffs});
+      add_array_cells(line, msg_, Fields::kDiff, diffs_, has);
+      add_array_cells(line, msg_, Fields::kDiffFlag, diffs_, has);
+    }
     return true;
   }
 
@@ -138,7 +149,7 @@ class VehicleStateCsv final : public ChannelCsv {
   const VehicleStateLayout& layout_;
   State msg_{};
   bool sized_ = false;
-  std::size_t units_ = 0, wheels_ = 0, joints_ = 0;
+  std::size_t units_ = 0, wheels_ = 0, joints_ = 0, diffs_ = 0;
 };
 
 }  // namespace

@@ -42,6 +42,17 @@ void BM_SedanStepEnhancedSteering(benchmark::State& state) {
 void BM_TruckStep(benchmark::State& state) {
   step_bench(state, RIG_SOURCE_DIR "/config/vehicles/truck-3axle.toml");
 }
+/// Differentials (issue 17 item 6): the all-wheel-drive sedan (viscous centre, limited-slip
+/// rear, open front) and the 6x4 tractor with and without its modelled tandem differentials.
+void BM_Sedan4x4Step(benchmark::State& state) {
+  step_bench(state, RIG_SOURCE_DIR "/config/vehicles/sedan-4x4.toml");
+}
+void BM_Tractor6x4Step(benchmark::State& state) {
+  step_bench(state, RIG_SOURCE_DIR "/config/vehicles/tractor-6x4.toml");
+}
+void BM_Tractor6x4DiffStep(benchmark::State& state) {
+  step_bench(state, RIG_SOURCE_DIR "/config/vehicles/tractor-6x4-diff.toml");
+}
 
 /// 20 s of a double-lane-change-like steering input at 60 km/h, offline (wall time per run).
 void BM_Sedan20sOffline(benchmark::State& state) {
@@ -104,6 +115,9 @@ BENCHMARK(BM_SedanStepStraightBelgianBlock);
 BENCHMARK(BM_SedanStep);
 BENCHMARK(BM_SedanStepEnhancedSteering);
 BENCHMARK(BM_TruckStep);
+BENCHMARK(BM_Sedan4x4Step);
+BENCHMARK(BM_Tractor6x4Step);
+BENCHMARK(BM_Tractor6x4DiffStep);
 BENCHMARK(BM_Sedan20sOffline)->Unit(benchmark::kMillisecond);
 
 }  // namespace

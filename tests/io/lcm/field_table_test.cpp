@@ -47,11 +47,14 @@ TEST(VehicleStateFields, NamesAreUniqueInTheirGroupAndCarryTheirUnit) {
   expect_rows_named(Fields::kWheel, "wheel", names);
   expect_rows_named(Fields::kWheelFlag, "wheel", names);
   expect_rows_named(Fields::kJoint, "joint", names);
+  expect_rows_named(Fields::kDiff, "diff", names);
+  expect_rows_named(Fields::kDiffFlag, "diff", names);
   expect_rows_named(Fields::kVehicle, "", names);
   expect_rows_named(Fields::kVehicleInt, "", names);
   for (const auto& row : Fields::kVehicle) {
     const std::string_view group = group_of(row.name);
-    EXPECT_TRUE(group != "unit" && group != "wheel" && group != "joint") << row.name;
+    EXPECT_TRUE(group != "unit" && group != "wheel" && group != "joint" && group != "diff")
+        << row.name;
   }
 }
 
@@ -94,6 +97,28 @@ TEST(VehicleStateFields, TheBuilderFillsEveryRowFromItsSource) {
   EXPECT_EQ(msg.unit_pitch_rad[1], 0.02);
   EXPECT_EQ(msg.brake_pressure_rl_pa, 0.5e5);
   EXPECT_EQ(msg.joint_force_z_n[0], 300.0);
+  EXPECT_EQ(msg.num_diffs, 0);  // none configured: no elements
+}
+
+TEST(VehicleStateFields, DifferentialsAreFilledPerDifferential) {
+  Snapshot s = test::make_synthetic_snapshot(321, 0.001);
+  s.report.differential_count = 2;
+  s.report.differentials[0] = {10.0, 11.0, 9.0, 0};
+  s.report.differentials[1] = {11.0, 11.0, 11.0, 1};
+  rig::vehicle_state_t msg;
+  fill_vehicle_state(s, msg);
+  ASSERT_EQ(msg.num_diffs, 2);
+  for (const auto& row : Fields::kDiff) {
+    ASSERT_EQ((msg.*row.lcm).size(), 2u) << row.name;
+    for (std::size_t j = 0; j < 2; ++j)
+      EXPECT_EQ((msg.*row.lcm)[j], row.source(s.report.differentials[j])) << row.name;
+  }
+  EXPECT_EQ(msg.diff_output_b_speed_radps[0], 9.0);
+  EXPECT_EQ(msg.diff_locked[1], 1);
+  s.report.differential_count = 0;  // and back to none: the arrays shrink
+  fill_vehicle_state(s, msg);
+  EXPECT_EQ(msg.num_diffs, 0);
+  EXPECT_TRUE(msg.diff_locked.empty());
 }
 
 }  // namespace

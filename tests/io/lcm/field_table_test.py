@@ -196,7 +196,7 @@ def check_csv(type_name, csv_file, messages):
 
 def check_log2csv():
     values = Values()
-    state_counts = {"num_units": 2, "num_wheels": 5, "num_joints": 3}
+    state_counts = {"num_units": 2, "num_wheels": 5, "num_joints": 3, "num_diffs": 2}
     # Wheel i of unit wheel_unit[i]: small values, as the rig writes them (int8).
     wheel_unit = {"wheel_unit": [0, 0, 0, 1, 1]}
     messages = {

@@ -49,5 +49,7 @@ int main() {
   print_rows("vehicle", Fields::kVehicle);
   print_rows("vehicle", Fields::kVehicleInt);
   print_rows("joint", Fields::kJoint);
+  print_rows("diff", Fields::kDiff);
+  print_rows("diff", Fields::kDiffFlag);
   return 0;
 }

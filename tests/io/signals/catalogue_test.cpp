@@ -19,12 +19,16 @@ const std::string kDir = std::string(RIG_SOURCE_DIR);
 const std::string kSedan = kDir + "/config/rig.toml";
 const std::string kTruck = kDir + "/tests/io/signals/configs/truck.toml";
 const std::string kThreeUnits = kDir + "/tests/io/signals/configs/three-units.toml";
+const std::string kSedan4x4 = kDir + "/config/maneuvers/mu-split-acceleration-4x4.toml";
 
 // Per unit: 15 body quantities, 18 per wheel (17 doubles of the field table and slip_valid);
-// the vehicle rows with a catalogue name: 9 steering, 2 engine and the gear; 5 per joint.
-// Inputs: 12 of unit 1 and per unit 2 circuits and one pressure per wheel.
-constexpr std::size_t count(std::initializer_list<int> axles, int joints) {
-  std::size_t n = 12 + 12 + 5 * static_cast<std::size_t>(joints);
+// the vehicle rows with a catalogue name: 9 steering, 2 engine and the gear; 5 per joint; 4 per
+// configured differential (issue 17: input and output speeds, locked).
+// Inputs: 14 of unit 1 (issue 17: the two differential locks) and per unit 2 circuits and one
+// pressure per wheel.
+constexpr std::size_t count(std::initializer_list<int> axles, int joints, int differentials = 0) {
+  std::size_t n =
+      14 + 12 + 5 * static_cast<std::size_t>(joints) + 4 * static_cast<std::size_t>(differentials);
   // per wheel: 19, and the road under it (issue 16: road_z_m, road_normal_x/y/z, road_mu)
   for (const int a : axles) n += 2 + 15 + static_cast<std::size_t>(2 * a) * (19 + 5);
   return n;
@@ -34,10 +38,16 @@ TEST(Catalogue, NamesAndCountsFollowTheModelShape) {
   const RigConfig sedan = load_config(kSedan);
   const RigConfig truck = load_config(kTruck);
   const RigConfig three = load_config(kThreeUnits);
-  EXPECT_EQ(sedan.catalogue->entries().size(), count({2}, 0));        // 137
-  EXPECT_EQ(truck.catalogue->entries().size(), count({3}, 0));        // 185
-  EXPECT_EQ(three.catalogue->entries().size(), count({2, 2, 2}, 2));  // 373
-  EXPECT_EQ(sedan.catalogue->entries().size(), 137u);
+  const RigConfig awd = load_config(kSedan4x4);
+  EXPECT_EQ(sedan.catalogue->entries().size(), count({2}, 0));        // 139
+  EXPECT_EQ(truck.catalogue->entries().size(), count({3}, 0));        // 187
+  EXPECT_EQ(three.catalogue->entries().size(), count({2, 2, 2}, 2));  // 375
+  EXPECT_EQ(awd.catalogue->entries().size(), count({2}, 0, 3));       // 151
+  EXPECT_EQ(sedan.catalogue->entries().size(), 139u);
+  EXPECT_NE(sedan.catalogue->find("unit1.drivetrain.differential_lock_axle_cmd"), nullptr);
+  EXPECT_EQ(sedan.catalogue->find("unit1.drivetrain.diff1.locked"), nullptr);
+  EXPECT_NE(awd.catalogue->find("unit1.drivetrain.diff3.output_b_speed_radps"), nullptr);
+  EXPECT_EQ(awd.catalogue->find("unit1.drivetrain.diff4.locked"), nullptr);
   for (const char* name : {"unit1.axle2.right.load_n", "unit1.axle1.left.brake_pressure_pa",
                            "unit1.steering.overlay_angle_cmd_rad", "unit1.ignition_state",
                            "unit1.drivetrain.gear", "unit1.axle1.left.applied_brake_pressure_pa"})
@@ -52,7 +62,7 @@ TEST(Catalogue, NamesAndCountsFollowTheModelShape) {
 }
 
 TEST(Catalogue, ShapeMatchesTheConstructedModelsReport) {
-  for (const std::string& file : {kSedan, kTruck, kThreeUnits}) {
+  for (const std::string& file : {kSedan, kTruck, kThreeUnits, kSedan4x4}) {
     const RigConfig c = load_config(file);
     const auto m = make_model(c);
     model::ModelReport r;
@@ -64,6 +74,7 @@ TEST(Catalogue, ShapeMatchesTheConstructedModelsReport) {
                 2 * shape.axle_count[static_cast<std::size_t>(k)])
           << file;
     EXPECT_EQ(r.joint_count, shape.joint_count) << file;
+    EXPECT_EQ(r.differential_count, shape.differential_count) << file;
   }
 }
 

@@ -1,11 +1,13 @@
 #!/usr/bin/python3
 """rig-log2csv reads LCM logs written before rig.vehicle_state_t gained the per-wheel road fields
-(issue 16: wheel_road_z_m, wheel_road_normal_x/y/z, wheel_road_mu).
+(v1, issue 16: wheel_road_z_m, wheel_road_normal_x/y/z, wheel_road_mu) and before it gained the
+differentials (v2, issue 17: num_diffs, diff_*).
 
 usage: legacy_log_test.py RIG_LOG2CSV
 
 v1/*.lcm were written by main's `rig run` at 8f435e5 (the sedan's ISO 7401 step steer and the
-car + trailer, 20 cycles each, --offline), v1/*.RIG_STATE.csv by main's rig-log2csv from them.
+car + trailer, 20 cycles each, --offline), v1/*.RIG_STATE.csv by main's rig-log2csv from them;
+v2/* likewise by main at cc32032 (--duration 0.02).
 Today's rig-log2csv must give the same RIG_STATE.csv byte for byte (the columns the log has, the
 same values: a field the legacy decoder forgot to carry over would read 0) and name the layout.
 """
@@ -15,9 +17,10 @@ import sys
 import tempfile
 
 LOG2CSV = sys.argv[1]
-HERE = pathlib.Path(__file__).resolve().parent / "v1"
+ROOT = pathlib.Path(__file__).resolve().parent
 failures = 0
-for log in sorted(HERE.glob("*.lcm")):
+for version, log in [(v, log) for v in ("v1", "v2") for log in sorted((ROOT / v).glob("*.lcm"))]:
+    HERE = ROOT / version
     with tempfile.TemporaryDirectory() as out:
         r = subprocess.run([LOG2CSV, str(log), out], capture_output=True, text=True)
         if r.returncode != 0:
@@ -25,7 +28,7 @@ for log in sorted(HERE.glob("*.lcm")):
             failures += 1
             continue
         state = [line for line in r.stdout.splitlines() if "RIG_STATE.csv" in line]
-        if not state or "v1" not in state[0] or "20 rows" not in state[0]:
+        if not state or version not in state[0] or "20 rows" not in state[0]:
             print(f"FAIL {log.name}: rig-log2csv says {state}")
             failures += 1
         got = (pathlib.Path(out) / "RIG_STATE.csv").read_bytes()
@@ -44,7 +47,10 @@ for log in sorted(HERE.glob("*.lcm")):
             failures += 1
         else:
             print(f"ok {log.name}: {len(want.splitlines())} lines identical to main's CSV; {state[0]}")
-        if b"wheel0_road_" in got:
+        if version == "v1" and b"wheel0_road_" in got:
             print(f"FAIL {log.name}: the CSV of a v1 log has road columns the log does not carry")
+            failures += 1
+        if b"diff" in got.splitlines()[0]:
+            print(f"FAIL {log.name}: the CSV of a {version} log has differential columns")
             failures += 1
 sys.exit(1 if failures else 0)
