@@ -29,7 +29,7 @@ import rig_checks  # noqa: E402
 RIG, LOG2CSV, SRC, NAME = sys.argv[1:5]
 COLUMNS = ("sim_time_s", "unit0_", "unit1_", "wheel0_", "wheel1_", "wheel2_", "wheel3_", "wheel4_",
            "wheel5_", "steering_", "gear", "num_", "joint0_", "rack_", "torsion_bar_", "tie_rod_",
-           "brake_pressure_")
+           "brake_pressure_", "diff")
 TMP = tempfile.mkdtemp(prefix=f"rig_maneuver_{NAME}_")
 # Configurations that run until stopped get a duration here.
 DURATION_S = {"bench": "5"}
@@ -765,6 +765,41 @@ def case_mu_split_braking(s, rows):
           f"yawed to the high-mu (left) side: {end['unit0_yaw_rad']:.4f} rad")
     held = max(abs(r["steering_wheel_angle_rad"]) for r in rows)
     check(held < 0.01, f"the wheel held straight by the robot (within {held:.4f} rad)")
+
+
+def case_mu_split_acceleration_4x4(s, rows):
+    r1 = at(rows, 1.0)
+    check(r1["wheel0_road_mu"] == 1.0 and r1["wheel1_road_mu"] == 0.1, "right wheels on ice")
+    check(r1["num_diffs"] == 3, f"centre, rear and front differentials: {r1['num_diffs']}")
+    # the rear limited slip (diff1: 40 N m + |T_in| / 3 of the step's start) while it slips
+    slipping = 0
+    for prev, r in zip(rows, rows[1:]):
+        if r["sim_time_s"] < 0.5 or r["diff1_locked"] != 0:
+            continue
+        t_in = prev["wheel2_drive_torque_nm"] + prev["wheel3_drive_torque_nm"]
+        locking = 40.0 + abs(t_in) / 3.0
+        diff = r["wheel2_drive_torque_nm"] - r["wheel3_drive_torque_nm"]
+        check(abs(diff - locking) < 1e-6 * locking,
+              f"t {r['sim_time_s']}: T_RL - T_RR {diff}, T_L {locking}")
+        slipping += 1
+    check(slipping > 1000, f"the rear clutch slips ({slipping} states)")
+    r3, r5 = at(rows, 3.0), at(rows, 5.0)
+    check(r3["diff0_locked"] == 0 and r5["diff0_locked"] == 1, "the driver's centre lock 4..6 s")
+    check(r5["diff0_output_a_speed_radps"] == r5["diff0_output_b_speed_radps"],
+          "the locked centre's outputs turn as one")
+    check(speed(rows[-1]) > 10.0, f"accelerates on split mu: {speed(rows[-1]):.2f} m/s at 8 s")
+
+
+def case_mu_split_acceleration_6x4(s, rows):
+    r2 = at(rows, 2.0)
+    check(r2["num_diffs"] == 3, "inter-axle and two axle differentials")
+    t = [r2[f"wheel{i}_drive_torque_nm"] for i in range(2, 6)]
+    check(max(t) - min(t) < 1e-9 * max(t), f"all open: the four drive wheels' torques equal {t}")
+    check(r2["wheel5_spin_radps"] > 2 * r2["wheel4_spin_radps"], "a right-hand (ice) wheel spins")
+    r4, r6 = at(rows, 4.0), at(rows, 6.0)
+    check(r4["diff0_locked"] == 1 and r4["diff1_locked"] == 0, "the inter-axle lock from 3 s")
+    check(all(r6[f"diff{j}_locked"] == 1 for j in range(3)), "every lock in from 5 s")
+    check(speed(rows[-1]) > 2 * speed(r2), f"pulls away: {speed(r2):.2f} -> {speed(rows[-1]):.2f} m/s")
 
 
 summary, states = run_offline(config_path(NAME))

@@ -38,12 +38,13 @@ void DifferentialShafts::begin_step(const VehicleInputs& inputs) noexcept {
 void DifferentialShafts::reduce(const std::array<bool, kMaxDifferentials>& fixed, LeafMatrix& g,
                                 DiffMatrix& k) const noexcept {
   g = tree_.g;
-  for (int j = 0; j < kMaxDifferentials; ++j)
-    if (j >= tree_.count || fixed[static_cast<std::size_t>(j)]) g.col(j).setZero();
+  for (int j = 0; j < tree_.count; ++j)
+    if (fixed[static_cast<std::size_t>(j)]) g.col(j).setZero();
+  k.resize(tree_.count, tree_.count);
   k.noalias() = d_ * g.transpose() * g;
-  for (int j = 0; j < kMaxDifferentials; ++j) {
+  for (int j = 0; j < tree_.count; ++j) {
     const auto jj = static_cast<std::size_t>(j);
-    if (j >= tree_.count || fixed[jj]) {  // delta_j = 0: a unit row and column
+    if (fixed[jj]) {  // delta_j = 0: a unit row and column
       k.row(j).setZero();
       k.col(j).setZero();
       k(j, j) = 1.0;
@@ -65,7 +66,7 @@ void DifferentialShafts::clutches(const LeafVector& x, std::array<bool, kMaxDiff
   DiffMatrix k;
   reduce(fixed, g, k);
   const Eigen::LLT<DiffMatrix> llt(k);
-  const DiffMatrix w = llt.solve(DiffMatrix::Identity());
+  const DiffMatrix w = llt.solve(DiffMatrix::Identity(tree_.count, tree_.count));
   const DiffVector b = -llt.solve(g.transpose() * x);  // delta with the clutches open
   // delta = b + W lambda: each clutch sticks (delta_j = 0, |lambda_j| <= capacity) or slides
   solver::detail::Square4 ww{};
@@ -87,16 +88,16 @@ void DifferentialShafts::clutches(const LeafVector& x, std::array<bool, kMaxDiff
   }
 }
 
-void DifferentialShafts::solve(const Vector& s, double carrier_radps,
-                               ShaftSolution& out) const noexcept {
-  LeafVector x = LeafVector::Zero();
+void DifferentialShafts::solve(const Vector& s, double carrier_radps, ShaftSolution& out,
+                               bool partials) const noexcept {
+  LeafVector x(tree_.leaf_count);
   for (int i = 0; i < tree_.leaf_count; ++i) {
     const double spin =
         state_.spin_radps[static_cast<std::size_t>(tree_.wheel[static_cast<std::size_t>(i)])];
     x(i) = c_ * s(i) + d_ * (carrier_radps - spin);
   }
   out.fixed = locked_;
-  DiffVector lambda = DiffVector::Zero();
+  DiffVector lambda = DiffVector::Zero(tree_.count);
   clutches(x, out.fixed, lambda);
   LeafMatrix g;
   DiffMatrix k;
@@ -104,7 +105,7 @@ void DifferentialShafts::solve(const Vector& s, double carrier_radps,
   const Eigen::LLT<DiffMatrix> llt(k);
   out.delta_radps = llt.solve(lambda - g.transpose() * x);
   out.torque_nm = x + d_ * g * out.delta_radps;
-  out.s.noalias() = g * llt.solve(g.transpose());
+  if (partials) out.s.noalias() = g * llt.solve(g.transpose());
 }
 
 void DifferentialShafts::rate(const Vector& s, Vector& f) const noexcept {
@@ -120,9 +121,8 @@ void DifferentialShafts::rate(const Vector& s, Vector& f) const noexcept {
 
 bool DifferentialShafts::rate_jacobian(const Vector& s, Matrix& df_ds) const noexcept {
   ShaftSolution sol;
-  solve(s, work_.carrier_speed_radps, sol);
-  const Eigen::Index n = tree_.leaf_count;
-  df_ds = -c_ * sol.s.topLeftCorner(n, n);
+  solve(s, work_.carrier_speed_radps, sol, true);
+  df_ds = -c_ * sol.s;
   return true;
 }
 
@@ -130,7 +130,7 @@ void DifferentialShafts::wheel_torques(
     double carrier_radps, double h, std::array<double, kMaxWheels>& torque_nm,
     std::array<double, kMaxWheels>& added_inertia_kgm2) const noexcept {
   ShaftSolution sol;
-  solve(state_.shaft_twist_rad, carrier_radps, sol);
+  solve(state_.shaft_twist_rad, carrier_radps, sol, true);
   for (int i = 0; i < tree_.leaf_count; ++i) {
     const auto k = static_cast<std::size_t>(tree_.wheel[static_cast<std::size_t>(i)]);
     torque_nm[k] = sol.torque_nm(i);

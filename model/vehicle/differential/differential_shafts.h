@@ -24,15 +24,15 @@
 
 namespace rig::model::vehicle::differential {
 
-using LeafVector = Eigen::Matrix<double, kMaxLeaves, 1>;
-using DiffVector = Eigen::Matrix<double, kMaxDifferentials, 1>;
+using LeafVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxLeaves, 1>;
+using DiffVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxDifferentials, 1>;
+using LeafSquare = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxLeaves, kMaxLeaves>;
 
 /// The tree at one state: relative speeds, shaft torques, which differentials turn as one.
 struct ShaftSolution {
-  DiffVector delta_radps = DiffVector::Zero();
-  LeafVector torque_nm = LeafVector::Zero();  ///< per leaf (driven wheel in the tree's order)
-  Eigen::Matrix<double, kMaxLeaves, kMaxLeaves> s =
-      Eigen::Matrix<double, kMaxLeaves, kMaxLeaves>::Zero();
+  DiffVector delta_radps;
+  LeafVector torque_nm;  ///< per leaf (driven wheel in the tree's order)
+  LeafSquare s;          ///< S = G~ K~^-1 G~^T (only when asked for: the partials)
   std::array<bool, kMaxDifferentials> fixed{};  ///< locked, or its clutch sticks
 };
 
@@ -59,8 +59,9 @@ class DifferentialShafts final : public solver::ForceElement<Eigen::Dynamic>, pu
                      std::array<double, kMaxWheels>& added_inertia_kgm2) const noexcept override;
   [[nodiscard]] double carrier_torque_nm(double carrier_radps) const noexcept override;
 
-  /// The tree at twists s and carrier speed w_c, the state's wheel spins.
-  void solve(const Vector& s, double carrier_radps, ShaftSolution& out) const noexcept;
+  /// The tree at twists s and carrier speed w_c, the state's wheel spins; S too if `partials`.
+  void solve(const Vector& s, double carrier_radps, ShaftSolution& out,
+             bool partials = false) const noexcept;
   /// Every differential's speeds and lock at the state (its twists, spins and w_c).
   void speeds(double carrier_radps,
               std::array<DifferentialReport, kMaxDifferentials>& out) const noexcept;

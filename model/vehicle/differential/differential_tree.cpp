@@ -47,6 +47,9 @@ DifferentialTree build_tree(const VehicleParams& p) {
   }
   const std::vector<DifferentialParams> all = all_differentials(p);
   t.count = static_cast<int>(all.size());
+  t.g = LeafMatrix::Zero(t.leaf_count, t.count);
+  t.input_row = DiffMatrix::Zero(t.count, t.count);
+  t.side = SideMatrix::Zero(t.leaf_count, t.count);
   for (int j = 0; j < t.count; ++j) {
     const DifferentialParams& d = all[static_cast<std::size_t>(j)];
     t.params[static_cast<std::size_t>(j)] = d;

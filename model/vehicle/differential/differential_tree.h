@@ -22,8 +22,13 @@ inline constexpr int kMaxLeaves = kMaxWheels;
 /// At most this many limited-slip differentials (the friction solve's contacts, dry_friction.h).
 inline constexpr int kMaxLimitedSlip = 4;
 
-using LeafMatrix = Eigen::Matrix<double, kMaxLeaves, kMaxDifferentials>;
-using DiffMatrix = Eigen::Matrix<double, kMaxDifferentials, kMaxDifferentials>;
+// sized to the tree (n leaves, m differentials) within fixed maxima: never on the heap
+using LeafMatrix =
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxLeaves, kMaxDifferentials>;
+using DiffMatrix =
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxDifferentials, kMaxDifferentials>;
+using SideMatrix =
+    Eigen::Matrix<int, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxLeaves, kMaxDifferentials>;
 
 struct DifferentialTree {
   int leaf_count = 0;                   ///< driven wheels
@@ -31,11 +36,10 @@ struct DifferentialTree {
   int count = 0;                        ///< differentials: the configured, then implicit open
                                         ///< axle differentials of driven axles not named
   std::array<DifferentialParams, kMaxDifferentials> params{};  ///< per differential
-  LeafMatrix g = LeafMatrix::Zero();          ///< w_side = w_c 1 + G delta (unused parts zero)
-  DiffMatrix input_row = DiffMatrix::Zero();  ///< w_in_j = w_c + input_row.row(j) delta
-  /// leaf i lies under side a (1) / side b (-1) of differential j, or not (0).
-  Eigen::Matrix<int, kMaxLeaves, kMaxDifferentials> side =
-      Eigen::Matrix<int, kMaxLeaves, kMaxDifferentials>::Zero();
+  LeafMatrix g;                                                ///< n x m: w_side = w_c 1 + G delta
+  DiffMatrix input_row;  ///< m x m: w_in_j = w_c + input_row.row(j) delta
+  /// n x m: leaf i lies under side a (1) / side b (-1) of differential j, or not (0).
+  SideMatrix side;
 };
 
 /// How many differentials the tree of p has (the configured and the implicit open ones across
