@@ -184,13 +184,17 @@ void locate_can_routes(const io::config::StrictTable& routing, const RoutingRequ
 io::signals::ModelShape model_shape(const ModelSettings& model) {
   io::signals::ModelShape shape;
   shape.axle_count = {1, 0, 0, 0};  // the quarter car
-  if (model.vehicle) shape.axle_count[0] = static_cast<int>(model.vehicle->params.axles.size());
+  if (model.vehicle) {
+    shape.axle_count[0] = static_cast<int>(model.vehicle->params.axles.size());
+    shape.body_count = static_cast<int>(model.vehicle->params.free_bodies.size());
+  }
   if (model.combination) {
     const auto& units = model.combination->units;
     shape.unit_count = static_cast<int>(units.size());
     for (std::size_t k = 0; k < units.size() && k < shape.axle_count.size(); ++k)
       shape.axle_count[k] = static_cast<int>(units[k].axles.size());
     shape.joint_count = static_cast<int>(model.combination->joints.size());
+    if (!units.empty()) shape.body_count = static_cast<int>(units[0].free_bodies.size());
   }
   return shape;
 }

@@ -45,6 +45,8 @@ void copy_report(const model::ModelReport& from, model::ModelReport& to) noexcep
   to.brake_pressure_pa = from.brake_pressure_pa;
   to.joint_count = from.joint_count;
   to.joints = from.joints;
+  to.body_count = from.body_count;
+  to.bodies = from.bodies;
   to.valid = from.valid;
   to.fault_kind = from.fault_kind;
   to.fault_unit = from.fault_unit;

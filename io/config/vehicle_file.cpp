@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include "io/config/free_body_config.h"
 #include "model/report.h"
 
 namespace rig::io::config {
@@ -450,6 +451,7 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file) {
   } else if (any_driven) {
     throw t.error("drivetrain", "a vehicle with a driven axle needs a [drivetrain] table");
   }
+  p.free_bodies = read_free_bodies(t);  // [[free_body]]: cab, engine, seat (none: empty)
   t.finish();
   return p;
 }

@@ -86,6 +86,16 @@ void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg) {
   msg.num_joints = joints;
   size_arrays<Fields::kJoint>(msg, nj);
   for (std::size_t j = 0; j < nj; ++j) set_elements<Fields::kJoint>(msg, j, r.joints[j]);
+
+  const std::int32_t bodies = clamp_count(r.body_count, model::kMaxFreeBodiesPerUnit);
+  const auto nb = static_cast<std::size_t>(bodies);
+  msg.num_bodies = bodies;
+  size_arrays<Fields::kBody>(msg, nb);
+  size_arrays<Fields::kBodyFlag>(msg, nb);
+  for (std::size_t b = 0; b < nb; ++b) {
+    set_elements<Fields::kBody>(msg, b, r.bodies[b]);
+    set_elements<Fields::kBodyFlag>(msg, b, r.bodies[b]);
+  }
 }
 
 namespace {

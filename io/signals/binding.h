@@ -33,17 +33,21 @@ struct ReportReader {
     kUnit,
     kWheel,
     kWheelFlag,
-    kJoint
+    kJoint,
+    kBody,
+    kBodyFlag
   };
   Group group = Group::kNone;
   std::uint8_t unit = 0;   ///< the unit (kUnit, kWheel, kWheelFlag)
-  std::uint8_t index = 0;  ///< the wheel of that unit, or the joint
+  std::uint8_t index = 0;  ///< the wheel of that unit, the joint or the free body
   double (*vehicle)(const model::ModelReport&) = nullptr;
   std::int32_t (*vehicle_int)(const model::ModelReport&) = nullptr;
   double (*of_unit)(const model::UnitReport&) = nullptr;
   double (*wheel)(const model::WheelReport&) = nullptr;
   std::int8_t (*wheel_flag)(const model::WheelReport&) = nullptr;
   double (*joint)(const model::JointReport&) = nullptr;
+  double (*body)(const model::FreeBodyReport&) = nullptr;
+  std::int8_t (*body_flag)(const model::FreeBodyReport&) = nullptr;
 
   [[nodiscard]] double read(const model::ModelReport& r) const noexcept {
     const auto& u = r.units[unit];
@@ -60,6 +64,10 @@ struct ReportReader {
         return static_cast<double>(wheel_flag(u.wheels[index]));
       case Group::kJoint:
         return joint(r.joints[index]);
+      case Group::kBody:
+        return body(r.bodies[index]);
+      case Group::kBodyFlag:
+        return static_cast<double>(body_flag(r.bodies[index]));
       case Group::kNone:
         break;
     }

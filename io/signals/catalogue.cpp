@@ -120,6 +120,7 @@ Catalogue::Catalogue(const ModelShape& shape) : shape_(shape) {
                                   " axles per unit");
   }
   shape_.joint_count = std::clamp(shape.joint_count, 0, model::kMaxJoints);
+  shape_.body_count = std::clamp(shape.body_count, 0, model::kMaxFreeBodiesPerUnit);
   add_inputs();
   add_outputs();
   add_aliases();
@@ -196,6 +197,23 @@ void Catalogue::add_outputs() {
       if (!row.quantity.empty())
         add(output("joint" + std::to_string(i + 1) + "." + std::string(row.quantity), row.unit,
                    rj));
+    }
+  }
+  add_body_outputs();
+}
+
+void Catalogue::add_body_outputs() {
+  for (int i = 0; i < shape_.body_count; ++i) {
+    const std::string prefix = "body" + std::to_string(i + 1) + ".";
+    ReportReader r{.group = Group::kBody, .index = static_cast<std::uint8_t>(i)};
+    for (const auto& row : Fields::kBody) {
+      r.body = row.source;
+      add(output(prefix + std::string(row.quantity), row.unit, r));
+    }
+    r.group = Group::kBodyFlag;
+    for (const auto& row : Fields::kBodyFlag) {
+      r.body_flag = row.source;
+      add(output(prefix + std::string(row.quantity), row.unit, r));
     }
   }
 }

@@ -34,6 +34,7 @@ struct ModelShape {
   int unit_count = 1;
   std::array<int, model::kMaxUnits> axle_count{2, 0, 0, 0};
   int joint_count = 0;  ///< couplings (unit_count - 1 for a combination)
+  int body_count = 0;   ///< free bodies of the leading unit (`[[free_body]]`): body1, body2, ...
 };
 
 struct Entry {
@@ -76,6 +77,7 @@ class Catalogue {
   void add(Entry e);
   void add_inputs();
   void add_outputs();
+  void add_body_outputs();  ///< body1.x_m, ...: the leading unit's free bodies
   void add_aliases();
   void alias(std::string_view name, std::string alias_name);
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "model/vehicle/chassis_kinematics.h"
+#include "model/vehicle/free_body/free_bodies.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -53,7 +54,10 @@ std::vector<std::array<double, 3>> default_body_points(const VehicleParams& p) {
 }
 
 FaultCheck::FaultCheck(const VehicleParams& p)
-    : limits_(p.fault_limits), road_(p.road), wheel_count_(2 * static_cast<int>(p.axles.size())) {
+    : limits_(p.fault_limits),
+      free_bodies_(p.free_bodies),
+      road_(p.road),
+      wheel_count_(2 * static_cast<int>(p.axles.size())) {
   check_limits(limits_);
   const std::vector<std::array<double, 3>> points =
       p.chassis.body_points_m.empty() ? default_body_points(p) : p.chassis.body_points_m;
@@ -88,7 +92,20 @@ ModelFault FaultCheck::check(const VehicleState& s, double time_s) const noexcep
     return fault(FaultKind::kRoll, -1, time_s, y(5), limits_.roll_rad);
   if (std::abs(y(4)) > limits_.pitch_rad)
     return fault(FaultKind::kPitch, -1, time_s, y(4), limits_.pitch_rad);
-  return check_body_points(y, time_s);
+  const ModelFault f = check_body_points(y, time_s);
+  if (f.kind != FaultKind::kNone) return f;
+  return check_free_bodies(s, time_s);
+}
+
+ModelFault FaultCheck::check_free_bodies(const VehicleState& s, double time_s) const noexcept {
+  for (std::size_t i = 0; i < free_bodies_.size() && i < kMaxFreeBodies; ++i) {
+    const FreeBodyParams& b = free_bodies_[i];
+    const double beyond = free_body_beyond_stop_m(b, static_cast<int>(i), s);
+    if (beyond > b.through_margin_m)
+      return fault(FaultKind::kFreeBodyStops, static_cast<int>(i), time_s, beyond,
+                   b.through_margin_m);
+  }
+  return {};
 }
 
 ModelFault FaultCheck::check_body_points(const Eigen::VectorXd& y, double time_s) const noexcept {

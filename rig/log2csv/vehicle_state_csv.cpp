@@ -104,6 +104,11 @@ class VehicleStateCsv final : public ChannelCsv {
     add_scalar_headers(h, Fields::kVehicleInt, has);
     h.emplace_back("num_joints");
     add_array_headers(h, Fields::kJoint, joints_, has);
+    if (bodies_ > 0) {  // free bodies: absent without any (the CSV of a vehicle without them)
+      h.emplace_back("num_bodies");
+      add_array_headers(h, Fields::kBody, bodies_, has);
+      add_array_headers(h, Fields::kBodyFlag, bodies_, has);
+    }
     return join_columns(h);
   }
 
@@ -113,6 +118,7 @@ class VehicleStateCsv final : public ChannelCsv {
       units_ = group_size(msg_, Fields::kUnit);
       wheels_ = group_size(msg_, Fields::kWheel);
       joints_ = group_size(msg_, Fields::kJoint);
+      bodies_ = group_size(msg_, Fields::kBody);
       sized_ = true;
     }
     line.add(event.timestamp_us);
@@ -131,6 +137,11 @@ class VehicleStateCsv final : public ChannelCsv {
     add_scalar_cells(line, msg_, Fields::kVehicleInt, has);
     line.add(std::int64_t{msg_.num_joints});
     add_array_cells(line, msg_, Fields::kJoint, joints_, has);
+    if (bodies_ > 0) {
+      line.add(std::int64_t{msg_.num_bodies});
+      add_array_cells(line, msg_, Fields::kBody, bodies_, has);
+      add_array_cells(line, msg_, Fields::kBodyFlag, bodies_, has);
+    }
     return true;
   }
 
@@ -138,7 +149,7 @@ class VehicleStateCsv final : public ChannelCsv {
   const VehicleStateLayout& layout_;
   State msg_{};
   bool sized_ = false;
-  std::size_t units_ = 0, wheels_ = 0, joints_ = 0;
+  std::size_t units_ = 0, wheels_ = 0, joints_ = 0, bodies_ = 0;
 };
 
 }  // namespace

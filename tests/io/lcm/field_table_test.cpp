@@ -47,6 +47,8 @@ TEST(VehicleStateFields, NamesAreUniqueInTheirGroupAndCarryTheirUnit) {
   expect_rows_named(Fields::kWheel, "wheel", names);
   expect_rows_named(Fields::kWheelFlag, "wheel", names);
   expect_rows_named(Fields::kJoint, "joint", names);
+  expect_rows_named(Fields::kBody, "body", names);
+  expect_rows_named(Fields::kBodyFlag, "body", names);
   expect_rows_named(Fields::kVehicle, "", names);
   expect_rows_named(Fields::kVehicleInt, "", names);
   for (const auto& row : Fields::kVehicle) {

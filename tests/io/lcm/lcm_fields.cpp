@@ -49,5 +49,7 @@ int main() {
   print_rows("vehicle", Fields::kVehicle);
   print_rows("vehicle", Fields::kVehicleInt);
   print_rows("joint", Fields::kJoint);
+  print_rows("body", Fields::kBody);
+  print_rows("body", Fields::kBodyFlag);
   return 0;
 }

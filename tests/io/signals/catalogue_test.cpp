@@ -19,6 +19,7 @@ const std::string kDir = std::string(RIG_SOURCE_DIR);
 const std::string kSedan = kDir + "/config/rig.toml";
 const std::string kTruck = kDir + "/tests/io/signals/configs/truck.toml";
 const std::string kThreeUnits = kDir + "/tests/io/signals/configs/three-units.toml";
+const std::string kTractorCab = kDir + "/tests/io/signals/configs/tractor-cab.toml";
 
 // Per unit: 15 body quantities, 18 per wheel (17 doubles of the field table and slip_valid);
 // the vehicle rows with a catalogue name: 9 steering, 2 engine and the gear; 5 per joint.
@@ -38,6 +39,13 @@ TEST(Catalogue, NamesAndCountsFollowTheModelShape) {
   EXPECT_EQ(truck.catalogue->entries().size(), count({3}, 0));        // 185
   EXPECT_EQ(three.catalogue->entries().size(), count({2, 2, 2}, 2));  // 373
   EXPECT_EQ(sedan.catalogue->entries().size(), 137u);
+  // free bodies (issue 17 item 4): 12 doubles and on_stop per body; none without (above)
+  const RigConfig cab = load_config(kTractorCab);
+  EXPECT_EQ(cab.catalogue->entries().size(), count({3}, 0) + 3 * 13);  // 224
+  for (const char* name : {"body1.roll_rad", "body2.x_m", "body3.z_m", "body3.on_stop"})
+    EXPECT_NE(cab.catalogue->find(name), nullptr) << name;
+  EXPECT_EQ(cab.catalogue->find("body4.z_m"), nullptr);
+  EXPECT_EQ(truck.catalogue->find("body1.z_m"), nullptr);
   for (const char* name : {"unit1.axle2.right.load_n", "unit1.axle1.left.brake_pressure_pa",
                            "unit1.steering.overlay_angle_cmd_rad", "unit1.ignition_state",
                            "unit1.drivetrain.gear", "unit1.axle1.left.applied_brake_pressure_pa"})
@@ -52,7 +60,7 @@ TEST(Catalogue, NamesAndCountsFollowTheModelShape) {
 }
 
 TEST(Catalogue, ShapeMatchesTheConstructedModelsReport) {
-  for (const std::string& file : {kSedan, kTruck, kThreeUnits}) {
+  for (const std::string& file : {kSedan, kTruck, kThreeUnits, kTractorCab}) {
     const RigConfig c = load_config(file);
     const auto m = make_model(c);
     model::ModelReport r;
@@ -64,6 +72,7 @@ TEST(Catalogue, ShapeMatchesTheConstructedModelsReport) {
                 2 * shape.axle_count[static_cast<std::size_t>(k)])
           << file;
     EXPECT_EQ(r.joint_count, shape.joint_count) << file;
+    EXPECT_EQ(r.body_count, shape.body_count) << file;
   }
 }
 
