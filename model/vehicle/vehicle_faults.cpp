@@ -69,6 +69,13 @@ FaultCheck::FaultCheck(const VehicleParams& p)
     points_[i] = Vec3(points[i][0], points[i][1], points[i][2]);
   for (std::size_t k = 0; k < static_cast<std::size_t>(wheel_count_) && k < kMaxWheels; ++k)
     spin_limit_radps_[k] = limits_.speed_mps / p.axles[k / 2].tire.tmeasy.radius_unloaded_m;
+  for (const FreeBodyParams& b : free_bodies_) {
+    std::array<Mount, kMaxMounts> mounts{};
+    const Vec3 position(b.position_m[0], b.position_m[1], b.position_m[2]);
+    for (std::size_t i = 0; i < b.mounts.size() && i < kMaxMounts; ++i)
+      mounts[i] = make_mount(b.mounts[i], position, b.through_margin_m);
+    free_body_mounts_.push_back(mounts);
+  }
 }
 
 ModelFault FaultCheck::check(const VehicleState& s, double time_s) const noexcept {
@@ -100,7 +107,8 @@ ModelFault FaultCheck::check(const VehicleState& s, double time_s) const noexcep
 ModelFault FaultCheck::check_free_bodies(const VehicleState& s, double time_s) const noexcept {
   for (std::size_t i = 0; i < free_bodies_.size() && i < kMaxFreeBodies; ++i) {
     const FreeBodyParams& b = free_bodies_[i];
-    const double beyond = free_body_beyond_stop_m(b, static_cast<int>(i), s);
+    const double beyond =
+        free_body_beyond_stop_m(b, static_cast<int>(i), s, free_body_mounts_[i].data());
     if (beyond > b.through_margin_m)
       return fault(FaultKind::kFreeBodyStops, static_cast<int>(i), time_s, beyond,
                    b.through_margin_m);

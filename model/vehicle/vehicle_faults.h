@@ -11,6 +11,7 @@
 
 #include "model/road/road.h"
 #include "model/stepped_model.h"
+#include "model/vehicle/free_body/mount.h"
 #include "model/vehicle/vehicle_state.h"
 
 namespace rig::model::vehicle {
@@ -51,6 +52,7 @@ class FaultCheck {
 
   FaultLimits limits_;
   std::vector<FreeBodyParams> free_bodies_;
+  std::vector<std::array<Mount, kMaxMounts>> free_body_mounts_;  ///< made once
   road::Road road_;
   /// Each body point's last cell on the road's surface: a cache that only speeds the query up
   /// (model/road/surface.h: any hint gives the same answer), hence mutable in the const check.

@@ -300,9 +300,12 @@ void VehicleFramework::free_body_jacobians(const Vector& y, const Vector& z, con
                                            Matrix& dq_dz) const noexcept {
   Mat6 ds = Mat6::Zero(), dz = Mat6::Zero();
   free_bodies_->add_chassis_jacobians(rigid_pose(y, z), ds, dz);
-  // speed-space displacements -> coordinates: dq/dy = dq/ds K, K = diag(R^T, E)
-  dq_dy.block<6, 3>(0, 0) += ds.leftCols<3>() * rot.transpose();
-  dq_dy.block<6, 3>(0, 3) += ds.rightCols<3>() * e;
+  // speed-space displacements -> coordinates: dq/dy = dq/ds K, K = diag(R^T, E) (fixed-size
+  // products first: a block of the dynamic matrix would take Eigen's general product)
+  Mat6 dy;
+  dy.leftCols<3>().noalias() = ds.leftCols<3>() * rot.transpose();
+  dy.rightCols<3>().noalias() = ds.rightCols<3>() * e;
+  dq_dy.topLeftCorner<6, 6>() += dy;
   dq_dz.topLeftCorner<6, 6>() += dz;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace rig::model::vehicle {
 namespace {
@@ -35,6 +37,14 @@ void compose(const RigidPose& chassis, double chassis_yaw, const RelativeMotion&
 
 FreeBodies::FreeBodies(const VehicleParams& p, const road::Road& road, VehicleState& state,
                        const VehicleWorkspace& work) {
+  if (p.free_bodies.size() > kMaxFreeBodies)
+    throw std::invalid_argument("vehicle: at most " + std::to_string(kMaxFreeBodies) +
+                                " free bodies");
+  for (const FreeBodyParams& b : p.free_bodies) {
+    if (b.mounts.empty() || b.mounts.size() > kMaxMounts || !(b.mass_kg > 0))
+      throw std::invalid_argument("vehicle: free body " + b.name + ": needs a mass > 0 and 1.." +
+                                  std::to_string(kMaxMounts) + " mounts");
+  }
   for (std::size_t i = 0; i < p.free_bodies.size(); ++i) {
     const FreeBodyParams& b = p.free_bodies[i];
     const int slot = static_cast<int>(i);
@@ -62,7 +72,8 @@ void FreeBodies::add_chassis_jacobians(const RigidPose& chassis, Mat6& dq_ds,
   }
 }
 
-double free_body_beyond_stop_m(const FreeBodyParams& b, int slot, const VehicleState& s) noexcept {
+double free_body_beyond_stop_m(const FreeBodyParams& b, int slot, const VehicleState& s,
+                               const Mount* mounts) noexcept {
   const RigidPose chassis = rigid_pose(s.framework_y, s.framework_z);
   const auto k = static_cast<std::size_t>(slot);
   if (b.kind == FreeBodyKind::kSeat) {
@@ -72,8 +83,9 @@ double free_body_beyond_stop_m(const FreeBodyParams& b, int slot, const VehicleS
   }
   const RigidPose body = body_pose(s, slot);
   double beyond = -1e9;
-  for (const MountParams& m : b.mounts) {
-    const Mount mount = make_mount(m, vec3(b.position_m), b.through_margin_m);
+  for (std::size_t i = 0; i < b.mounts.size() && i < kMaxMounts; ++i) {
+    const Mount mount =
+        mounts ? mounts[i] : make_mount(b.mounts[i], vec3(b.position_m), b.through_margin_m);
     beyond = std::max(beyond, mount_force(mount, chassis, body).beyond_stop_m);
   }
   return beyond;

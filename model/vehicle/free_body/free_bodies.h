@@ -48,9 +48,11 @@ class FreeBodies {
 };
 
 /// The largest |d| - clearance of body i's mounts at the state (> 0: on its stops). Pure; for
-/// the report and the fault check.
+/// the report and the fault check. `mounts`: the body's mounts made once (make_mount), or null
+/// to make them here.
 [[nodiscard]] double free_body_beyond_stop_m(const FreeBodyParams& b, int slot,
-                                             const VehicleState& s) noexcept;
+                                             const VehicleState& s,
+                                             const Mount* mounts = nullptr) noexcept;
 /// Body i's motion relative to the chassis (the seat: its deflection and rate in z only).
 [[nodiscard]] RelativeMotion free_body_motion(const FreeBodyParams& b, int slot,
                                               const VehicleState& s) noexcept;
