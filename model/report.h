@@ -12,6 +12,7 @@ inline constexpr int kMaxUnits = 4;           ///< vehicles in a combination
 inline constexpr int kMaxWheelsPerUnit = 12;  ///< up to 6 axles with 2 wheels
 inline constexpr int kMaxJoints = 3;          ///< couplings between units
 inline constexpr int kMaxDifferentials = 8;   ///< of a drive train (model/vehicle/differential)
+inline constexpr int kMaxFreeBodiesPerUnit = 4;  ///< cab, engine, seat, ... (`[[free_body]]`)
 
 struct WheelReport {
   double spin_radps = 0;      ///< wheel spin rate
@@ -92,6 +93,17 @@ struct JointReport {
   std::int32_t newton_iterations = 0;
 };
 
+/// A free body (model/vehicle/free_body) relative to its chassis: its CG from the design
+/// position and roll, pitch, yaw (chassis axes), their rates (the relative angular velocity,
+/// chassis axes). A seat: z and its rate only.
+struct FreeBodyReport {
+  std::array<double, 3> position_m{};
+  std::array<double, 3> orientation_rad{};  ///< roll, pitch, yaw
+  std::array<double, 3> velocity_mps{};
+  std::array<double, 3> angular_velocity_radps{};
+  std::int8_t on_stop = 0;  ///< 1: a mount beyond its stop clearance
+};
+
 /// Everything a tool may want to see of the model at one instant.
 struct ModelReport {
   double time_s = 0;
@@ -106,6 +118,9 @@ struct ModelReport {
   std::array<double, 4> brake_pressure_pa{};  ///< FL, FR, RL, RR of the first unit
   std::int32_t joint_count = 0;
   std::array<JointReport, kMaxJoints> joints{};
+  /// The leading unit's free bodies, in `[[free_body]]` order (0: none).
+  std::int32_t body_count = 0;
+  std::array<FreeBodyReport, kMaxFreeBodiesPerUnit> bodies{};
   // ---- validity (written by the rig's executive each cycle, not by the model) ----
   /// 1: the model's current state; 0: after a vehicle fault, the last fault-free state (held
   /// or stopped), every quantity above is then invalid.

@@ -26,6 +26,9 @@ enum class FaultKind : std::uint8_t {
   kRoll,        ///< |roll| [rad]
   kPitch,       ///< |pitch| [rad]
   kBodyGround,  ///< body point `index` below the road: value = its height above it [m]
+  /// free body `index` (`[[free_body]]` order) through its stops: value = the deflection beyond
+  /// the stop clearance, limit = the body's through_margin_m [m]
+  kFreeBodyStops,
 };
 
 /// One fault: plain data, copied by value.
@@ -38,7 +41,8 @@ struct ModelFault {
   double limit = 0;         ///< the limit it went beyond
 };
 
-/// "speed", "rate", "wheel_spin", "roll", "pitch", "body_ground", "non_finite", "none".
+/// "speed", "rate", "wheel_spin", "roll", "pitch", "body_ground", "free_body_stops",
+/// "non_finite", "none".
 constexpr std::string_view fault_kind_name(FaultKind k) noexcept {
   switch (k) {
     case FaultKind::kNone:
@@ -57,6 +61,8 @@ constexpr std::string_view fault_kind_name(FaultKind k) noexcept {
       return "pitch";
     case FaultKind::kBodyGround:
       return "body_ground";
+    case FaultKind::kFreeBodyStops:
+      return "free_body_stops";
   }
   return "?";
 }
@@ -67,6 +73,7 @@ constexpr std::string_view fault_value_unit(FaultKind k) noexcept {
     case FaultKind::kSpeed:
       return "m/s";
     case FaultKind::kBodyGround:
+    case FaultKind::kFreeBodyStops:
       return "m";
     case FaultKind::kRate:
     case FaultKind::kWheelSpin:

@@ -211,6 +211,7 @@ io::signals::ModelShape model_shape(const ModelSettings& model) {
     shape.axle_count[0] = static_cast<int>(model.vehicle->params.axles.size());
     shape.differential_count =
         model::vehicle::differential::differential_count(model.vehicle->params);
+    shape.body_count = static_cast<int>(model.vehicle->params.free_bodies.size());
   }
   if (model.combination) {
     const auto& units = model.combination->units;
@@ -218,8 +219,10 @@ io::signals::ModelShape model_shape(const ModelSettings& model) {
     for (std::size_t k = 0; k < units.size() && k < shape.axle_count.size(); ++k)
       shape.axle_count[k] = static_cast<int>(units[k].axles.size());
     shape.joint_count = static_cast<int>(model.combination->joints.size());
-    if (!units.empty())
+    if (!units.empty()) {
       shape.differential_count = model::vehicle::differential::differential_count(units[0]);
+      shape.body_count = static_cast<int>(units[0].free_bodies.size());
+    }
   }
   return shape;
 }

@@ -47,6 +47,8 @@ void copy_report(const model::ModelReport& from, model::ModelReport& to) noexcep
   to.joints = from.joints;
   to.differential_count = from.differential_count;
   to.differentials = from.differentials;
+  to.body_count = from.body_count;
+  to.bodies = from.bodies;
   to.valid = from.valid;
   to.fault_kind = from.fault_kind;
   to.fault_unit = from.fault_unit;

@@ -12,6 +12,7 @@ namespace {
 const char* index_noun(model::FaultKind k) noexcept {
   if (k == model::FaultKind::kWheelSpin) return ", wheel ";
   if (k == model::FaultKind::kBodyGround) return ", body point ";
+  if (k == model::FaultKind::kFreeBodyStops) return ", free body ";
   return "";
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 #include "io/config/differential_config.h"
+#include "io/config/free_body_config.h"
 #include "model/report.h"
 
 namespace rig::io::config {
@@ -457,6 +458,7 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file,
   } else if (any_driven) {
     throw t.error("drivetrain", "a vehicle with a driven axle needs a [drivetrain] table");
   }
+  p.free_bodies = read_free_bodies(t);  // [[free_body]]: cab, engine, seat (none: empty)
   t.finish();
   return p;
 }

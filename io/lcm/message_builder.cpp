@@ -96,6 +96,15 @@ void fill_vehicle_state(const Snapshot& snapshot, rig::vehicle_state_t& msg) {
     set_elements<Fields::kDiff>(msg, j, r.differentials[j]);
     set_elements<Fields::kDiffFlag>(msg, j, r.differentials[j]);
   }
+  const std::int32_t bodies = clamp_count(r.body_count, model::kMaxFreeBodiesPerUnit);
+  const auto nb = static_cast<std::size_t>(bodies);
+  msg.num_bodies = bodies;
+  size_arrays<Fields::kBody>(msg, nb);
+  size_arrays<Fields::kBodyFlag>(msg, nb);
+  for (std::size_t b = 0; b < nb; ++b) {
+    set_elements<Fields::kBody>(msg, b, r.bodies[b]);
+    set_elements<Fields::kBodyFlag>(msg, b, r.bodies[b]);
+  }
 }
 
 namespace {

@@ -28,6 +28,7 @@ struct VehicleStateFields {
   using W = model::WheelReport;
   using J = model::JointReport;
   using D = model::DifferentialReport;
+  using B = model::FreeBodyReport;
   using Steering = model::SteeringReport;
   using Drivetrain = model::DrivetrainReport;
 
@@ -163,11 +164,37 @@ struct VehicleStateFields {
       {"diff_locked", "1", member<&D::locked>, &S::diff_locked, "locked"},
   };
 
+  /// Per free body of the leading unit (num_bodies, `[[free_body]]` order; model/vehicle/
+  /// free_body): its motion relative to the chassis. Absent (no CSV columns) without bodies.
+  static constexpr ArrayField<S, B> kBody[] = {
+      {"body_x_m", "m", element<&B::position_m, 0>, &S::body_x_m, "x_m"},
+      {"body_y_m", "m", element<&B::position_m, 1>, &S::body_y_m, "y_m"},
+      {"body_z_m", "m", element<&B::position_m, 2>, &S::body_z_m, "z_m"},
+      {"body_roll_rad", "rad", element<&B::orientation_rad, 0>, &S::body_roll_rad, "roll_rad"},
+      {"body_pitch_rad", "rad", element<&B::orientation_rad, 1>, &S::body_pitch_rad, "pitch_rad"},
+      {"body_yaw_rad", "rad", element<&B::orientation_rad, 2>, &S::body_yaw_rad, "yaw_rad"},
+      {"body_vx_mps", "m/s", element<&B::velocity_mps, 0>, &S::body_vx_mps, "speed_x_mps"},
+      {"body_vy_mps", "m/s", element<&B::velocity_mps, 1>, &S::body_vy_mps, "speed_y_mps"},
+      {"body_vz_mps", "m/s", element<&B::velocity_mps, 2>, &S::body_vz_mps, "speed_z_mps"},
+      {"body_wx_radps", "rad/s", element<&B::angular_velocity_radps, 0>, &S::body_wx_radps,
+       "roll_rate_radps"},
+      {"body_wy_radps", "rad/s", element<&B::angular_velocity_radps, 1>, &S::body_wy_radps,
+       "pitch_rate_radps"},
+      {"body_wz_radps", "rad/s", element<&B::angular_velocity_radps, 2>, &S::body_wz_radps,
+       "yaw_rate_radps"},
+  };
+
+  /// Per free body, flags: 1 on its stops, 0 not.
+  static constexpr ArrayField<S, B, std::int8_t> kBodyFlag[] = {
+      {"body_on_stop", "1", member<&B::on_stop>, &S::body_on_stop, "on_stop"},
+  };
+
   /// The message's frame, written by the builder and rig-log2csv themselves: the cycle's
   /// timing (io::CycleTiming), the group counts and each wheel's unit.
   static constexpr std::string_view kFrame[] = {
       "sim_time_s", "monotonic_ns", "cycle",      "lateness_ns", "compute_ns", "deadline_miss",
       "num_units",  "num_wheels",   "wheel_unit", "num_joints",  "num_diffs",
+      "num_bodies",
   };
 };
 

@@ -35,11 +35,13 @@ struct ReportReader {
     kWheelFlag,
     kJoint,
     kDiff,
-    kDiffFlag
+    kDiffFlag,
+    kBody,
+    kBodyFlag
   };
   Group group = Group::kNone;
   std::uint8_t unit = 0;   ///< the unit (kUnit, kWheel, kWheelFlag)
-  std::uint8_t index = 0;  ///< the wheel of that unit, or the joint
+  std::uint8_t index = 0;  ///< the wheel of that unit, the joint or the free body
   double (*vehicle)(const model::ModelReport&) = nullptr;
   std::int32_t (*vehicle_int)(const model::ModelReport&) = nullptr;
   double (*of_unit)(const model::UnitReport&) = nullptr;
@@ -48,6 +50,8 @@ struct ReportReader {
   double (*joint)(const model::JointReport&) = nullptr;
   double (*diff)(const model::DifferentialReport&) = nullptr;
   std::int32_t (*diff_flag)(const model::DifferentialReport&) = nullptr;
+  double (*body)(const model::FreeBodyReport&) = nullptr;
+  std::int8_t (*body_flag)(const model::FreeBodyReport&) = nullptr;
 
   [[nodiscard]] double read(const model::ModelReport& r) const noexcept {
     const auto& u = r.units[unit];
@@ -68,6 +72,10 @@ struct ReportReader {
         return diff(r.differentials[index]);
       case Group::kDiffFlag:
         return static_cast<double>(diff_flag(r.differentials[index]));
+      case Group::kBody:
+        return body(r.bodies[index]);
+      case Group::kBodyFlag:
+        return static_cast<double>(body_flag(r.bodies[index]));
       case Group::kNone:
         break;
     }

@@ -123,6 +123,7 @@ Catalogue::Catalogue(const ModelShape& shape) : shape_(shape) {
   }
   shape_.joint_count = std::clamp(shape.joint_count, 0, model::kMaxJoints);
   shape_.differential_count = std::clamp(shape.differential_count, 0, model::kMaxDifferentials);
+  shape_.body_count = std::clamp(shape.body_count, 0, model::kMaxFreeBodiesPerUnit);
   add_inputs();
   add_outputs();
   add_aliases();
@@ -202,6 +203,7 @@ void Catalogue::add_outputs() {
     }
   }
   add_differential_outputs();
+  add_body_outputs();
 }
 
 void Catalogue::add_differential_outputs() {
@@ -215,6 +217,22 @@ void Catalogue::add_differential_outputs() {
     r.group = Group::kDiffFlag;
     for (const auto& row : Fields::kDiffFlag) {
       r.diff_flag = row.source;
+      add(output(prefix + std::string(row.quantity), row.unit, r));
+    }
+  }
+}
+
+void Catalogue::add_body_outputs() {
+  for (int i = 0; i < shape_.body_count; ++i) {
+    const std::string prefix = "body" + std::to_string(i + 1) + ".";
+    ReportReader r{.group = Group::kBody, .index = static_cast<std::uint8_t>(i)};
+    for (const auto& row : Fields::kBody) {
+      r.body = row.source;
+      add(output(prefix + std::string(row.quantity), row.unit, r));
+    }
+    r.group = Group::kBodyFlag;
+    for (const auto& row : Fields::kBodyFlag) {
+      r.body_flag = row.source;
       add(output(prefix + std::string(row.quantity), row.unit, r));
     }
   }

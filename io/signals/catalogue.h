@@ -37,6 +37,7 @@ struct ModelShape {
   int joint_count = 0;  ///< couplings (unit_count - 1 for a combination)
   /// The first unit's differentials (model::ModelReport::differential_count; 0: none configured).
   int differential_count = 0;
+  int body_count = 0;   ///< free bodies of the leading unit (`[[free_body]]`): body1, body2, ...
 };
 
 struct Entry {
@@ -80,6 +81,7 @@ class Catalogue {
   void add_inputs();
   void add_outputs();
   void add_differential_outputs();
+  void add_body_outputs();  ///< body1.x_m, ...: the leading unit's free bodies
   void add_aliases();
   void alias(std::string_view name, std::string alias_name);
 

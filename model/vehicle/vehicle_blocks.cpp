@@ -105,12 +105,19 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
   if (std::any_of(p.axles.begin(), p.axles.end(), [](const AxleParams& a) { return a.steered; }))
     sequence_.add_stage(*steering_stage_);
   sequence_.add_stage(wheel_stage_);
+  // free bodies (subsystems of eq. 2 at the chassis' y_V(k)); their mounts act on the framework
+  if (!p.free_bodies.empty()) {
+    free_bodies_ = std::make_unique<FreeBodies>(p, framework_.road(), state, work);
+    framework_.attach_free_bodies(free_bodies_.get());
+    for (int i = 0; i < free_bodies_->count(); ++i) sequence_.add_stage(free_bodies_->stage(i));
+  }
 }
 
 void VehicleBlocks::update_contacts(double lookahead_s) noexcept {
   const auto& y = state_.framework_y;
   const auto& z = state_.framework_z;
   kinematics_.update(state_, work_);  // eq. (29) at y_V(k), before any contact is evaluated
+  work_.lookahead_s = lookahead_s;
   const Mat3 rot = body_to_road(y(3), y(4), y(5));
   for (int i = 0; i < work_.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);

@@ -18,6 +18,7 @@
 #include "model/tire/tmeasy_force_element.h"
 #include "model/vehicle/differential/differential_shafts.h"
 #include "model/vehicle/drivetrain.h"
+#include "model/vehicle/free_body/free_bodies.h"
 #include "model/vehicle/half_shafts.h"
 #include "model/vehicle/steering/column_steering.h"
 #include "model/vehicle/steering/enhanced_steering.h"
@@ -69,6 +70,8 @@ class VehicleBlocks {
   /// The rack side's system (sec. 2.2): begin_step before the implicit step, report values.
   [[nodiscard]] SteeringSystem& steering_system() noexcept { return *steering_system_; }
   [[nodiscard]] const Drivetrain& drivetrain() const noexcept { return drivetrain_; }
+  /// The free bodies (`[[free_body]]`); null without any.
+  [[nodiscard]] FreeBodies* free_bodies() noexcept { return free_bodies_.get(); }
   /// The framework's stepper: M_VI and q of the step (for the force-coupled combination).
   [[nodiscard]] const solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization>&
   framework_stepper() const noexcept {
@@ -96,6 +99,7 @@ class VehicleBlocks {
   std::unique_ptr<solver::ForceElementStepper<Eigen::Dynamic>> shaft_stepper_;
   solver::MechanicalStepper<2> drivetrain_stepper_;
   std::unique_ptr<solver::Stage> steering_stage_;  ///< the stepper of one of the two
+  std::unique_ptr<FreeBodies> free_bodies_;        ///< none without [[free_body]]
   solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization> framework_stepper_;
   solver::SequentialStepper sequence_;
 };

@@ -15,9 +15,11 @@ VehicleModel::Pose VehicleModel::begin_settle(double speed_mps) noexcept {
 }
 
 void VehicleModel::hold_plane_motion(double speed_mps) noexcept {
+  const Vec6 old_y = state_.framework_y.head<6>(), old_z = state_.framework_z.head<6>();
   state_.framework_z(0) = speed_mps;
   state_.framework_z(1) = 0;
   state_.framework_z(5) = 0;
+  carry_free_bodies(p_, old_y, old_z, state_);  // the bodies move with the chassis
 }
 
 void VehicleModel::end_settle(const Pose& pose, double speed_mps) noexcept {
@@ -25,9 +27,11 @@ void VehicleModel::end_settle(const Pose& pose, double speed_mps) noexcept {
   const double settled_s = state_.time_s;
   state_.time_s = 0;
   state_.last_shift_s -= settled_s;
+  const Vec6 old_y = state_.framework_y.head<6>(), old_z = state_.framework_z.head<6>();
   state_.framework_y(0) = pose.x_m;
   state_.framework_y(1) = pose.y_m;
   state_.framework_y(3) = pose.yaw_rad;
+  carry_free_bodies(p_, old_y, old_z, state_);
   hold_plane_motion(speed_mps);
   state_.acceleration_mps2.setZero();
   saved_ = state_;
@@ -45,8 +49,10 @@ Equilibrium VehicleModel::settle(double speed_mps, int gear_request) noexcept {
       [&] {
         hold_plane_motion(speed_mps);
         if (!in_place) return;
+        const Vec6 old_y = state_.framework_y.head<6>(), old_z = state_.framework_z.head<6>();
         state_.framework_y(0) = pose.x_m;
         state_.framework_y(1) = pose.y_m;
+        carry_free_bodies(p_, old_y, old_z, state_);
       },
       [&] { return state_.acceleration_mps2.x(); });
   end_settle(pose, speed_mps);

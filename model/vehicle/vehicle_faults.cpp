@@ -7,6 +7,7 @@
 #include <string>
 
 #include "model/vehicle/chassis_kinematics.h"
+#include "model/vehicle/free_body/free_bodies.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -53,7 +54,10 @@ std::vector<std::array<double, 3>> default_body_points(const VehicleParams& p) {
 }
 
 FaultCheck::FaultCheck(const VehicleParams& p)
-    : limits_(p.fault_limits), road_(p.road), wheel_count_(2 * static_cast<int>(p.axles.size())) {
+    : limits_(p.fault_limits),
+      free_bodies_(p.free_bodies),
+      road_(p.road),
+      wheel_count_(2 * static_cast<int>(p.axles.size())) {
   check_limits(limits_);
   const std::vector<std::array<double, 3>> points =
       p.chassis.body_points_m.empty() ? default_body_points(p) : p.chassis.body_points_m;
@@ -65,6 +69,13 @@ FaultCheck::FaultCheck(const VehicleParams& p)
     points_[i] = Vec3(points[i][0], points[i][1], points[i][2]);
   for (std::size_t k = 0; k < static_cast<std::size_t>(wheel_count_) && k < kMaxWheels; ++k)
     spin_limit_radps_[k] = limits_.speed_mps / p.axles[k / 2].tire.tmeasy.radius_unloaded_m;
+  for (const FreeBodyParams& b : free_bodies_) {
+    std::array<Mount, kMaxMounts> mounts{};
+    const Vec3 position(b.position_m[0], b.position_m[1], b.position_m[2]);
+    for (std::size_t i = 0; i < b.mounts.size() && i < kMaxMounts; ++i)
+      mounts[i] = make_mount(b.mounts[i], position, b.through_margin_m);
+    free_body_mounts_.push_back(mounts);
+  }
 }
 
 ModelFault FaultCheck::check(const VehicleState& s, double time_s) const noexcept {
@@ -88,7 +99,21 @@ ModelFault FaultCheck::check(const VehicleState& s, double time_s) const noexcep
     return fault(FaultKind::kRoll, -1, time_s, y(5), limits_.roll_rad);
   if (std::abs(y(4)) > limits_.pitch_rad)
     return fault(FaultKind::kPitch, -1, time_s, y(4), limits_.pitch_rad);
-  return check_body_points(y, time_s);
+  const ModelFault f = check_body_points(y, time_s);
+  if (f.kind != FaultKind::kNone) return f;
+  return check_free_bodies(s, time_s);
+}
+
+ModelFault FaultCheck::check_free_bodies(const VehicleState& s, double time_s) const noexcept {
+  for (std::size_t i = 0; i < free_bodies_.size() && i < kMaxFreeBodies; ++i) {
+    const FreeBodyParams& b = free_bodies_[i];
+    const double beyond =
+        free_body_beyond_stop_m(b, static_cast<int>(i), s, free_body_mounts_[i].data());
+    if (beyond > b.through_margin_m)
+      return fault(FaultKind::kFreeBodyStops, static_cast<int>(i), time_s, beyond,
+                   b.through_margin_m);
+  }
+  return {};
 }
 
 ModelFault FaultCheck::check_body_points(const Eigen::VectorXd& y, double time_s) const noexcept {

@@ -11,6 +11,7 @@
 
 #include "model/road/road.h"
 #include "model/stepped_model.h"
+#include "model/vehicle/free_body/mount.h"
 #include "model/vehicle/vehicle_state.h"
 
 namespace rig::model::vehicle {
@@ -30,7 +31,8 @@ class FaultCheck {
   explicit FaultCheck(const VehicleParams& p);
 
   /// The first fault of `s`, in this order: not finite, CG speed, angular rate, wheel spins,
-  /// roll, pitch, body points (kind kNone if there is none). `time_s` is stamped on it.
+  /// roll, pitch, body points, free bodies through their stops (kind kNone if there is none).
+  /// `time_s` is stamped on it.
   [[nodiscard]] ModelFault check(const VehicleState& s, double time_s) const noexcept;
 
   [[nodiscard]] int body_point_count() const noexcept { return point_count_; }
@@ -46,7 +48,11 @@ class FaultCheck {
   [[nodiscard]] ModelFault check_body_points(const Eigen::VectorXd& y,
                                              double time_s) const noexcept;
 
+  [[nodiscard]] ModelFault check_free_bodies(const VehicleState& s, double time_s) const noexcept;
+
   FaultLimits limits_;
+  std::vector<FreeBodyParams> free_bodies_;
+  std::vector<std::array<Mount, kMaxMounts>> free_body_mounts_;  ///< made once
   road::Road road_;
   /// Each body point's last cell on the road's surface: a cache that only speeds the query up
   /// (model/road/surface.h: any hint gives the same answer), hence mutable in the const check.

@@ -6,6 +6,7 @@
 
 #include "model/tire/tmeasy_tire.h"
 #include "model/tire/vertical_tire_force.h"
+#include "model/vehicle/free_body/free_bodies.h"
 
 namespace rig::model::vehicle {
 
@@ -25,6 +26,12 @@ VehicleFramework::VehicleFramework(const VehicleParams& p, VehicleState& state,
   // Static loads of the sprung mass on the springs (heave + pitch of a rigid body on linear
   // springs; the lever rule for two axles): the springs are preloaded so that the design
   // position is at zero hub travel.
+  // the free bodies' weights rest on the chassis (their mounts): the springs carry them too
+  double body_weight = 0, body_moment = 0;
+  for (const FreeBodyParams& b : p.free_bodies) {
+    body_weight += b.mass_kg * g;
+    body_moment += b.mass_kg * g * b.position_m[0];
+  }
   double sk = 0, skx = 0, skxx = 0;
   for (const auto& a : p.axles) {
     sk += 2 * a.spring_stiffness_npm;
@@ -35,15 +42,15 @@ VehicleFramework::VehicleFramework(const VehicleParams& p, VehicleState& state,
   if (!c.supported) {
     Eigen::Matrix2d a2;
     a2 << sk, -skx, skx, -skxx;
-    heave_pitch =
-        a2.lu().solve(Eigen::Vector2d(c.mass_kg * g + c.payload_n, c.payload_n * c.payload_x_m));
+    heave_pitch = a2.lu().solve(Eigen::Vector2d(c.mass_kg * g + c.payload_n + body_weight,
+                                                c.payload_n * c.payload_x_m + body_moment));
   } else {
     // held at design height at x_s (heave = x_s pitch) by a support force F_s (up): unknowns
     // heave, pitch, F_s from the force and moment balance (a 1-axle trailer is determinate)
     Eigen::Matrix3d a3;
     a3 << sk, -skx, 1, skx, -skxx, c.support_x_m, 1, -c.support_x_m, 0;
-    const Eigen::Vector3d x =
-        a3.lu().solve(Eigen::Vector3d(c.mass_kg * g + c.payload_n, c.payload_n * c.payload_x_m, 0));
+    const Eigen::Vector3d x = a3.lu().solve(Eigen::Vector3d(
+        c.mass_kg * g + c.payload_n + body_weight, c.payload_n * c.payload_x_m + body_moment, 0));
     heave_pitch = x.head<2>();
     support_load_n_ = x(2);
   }
@@ -211,6 +218,7 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
   }
   q.segment<3>(0) = ft;
   q.segment<3>(3) = tr;
+  if (free_bodies_) free_bodies_->add_chassis_load(rigid_pose(y, z), q.head<6>());
 }
 
 void VehicleFramework::suspension_jacobians(int i, const Vector& y, const Vector& z, Matrix& dq_dy,
@@ -283,7 +291,22 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
     suspension_jacobians(i, y, z, dq_dy, dq_dz);
     tire_jacobians(i, rot, e_inv, y, z, dq_dy, dq_dz);
   }
+  if (free_bodies_) free_body_jacobians(y, z, rot, e_inv, dq_dy, dq_dz);
   return true;
+}
+
+void VehicleFramework::free_body_jacobians(const Vector& y, const Vector& z, const Mat3& rot,
+                                           const Mat3& e, Matrix& dq_dy,
+                                           Matrix& dq_dz) const noexcept {
+  Mat6 ds = Mat6::Zero(), dz = Mat6::Zero();
+  free_bodies_->add_chassis_jacobians(rigid_pose(y, z), ds, dz);
+  // speed-space displacements -> coordinates: dq/dy = dq/ds K, K = diag(R^T, E) (fixed-size
+  // products first: a block of the dynamic matrix would take Eigen's general product)
+  Mat6 dy;
+  dy.leftCols<3>().noalias() = ds.leftCols<3>() * rot.transpose();
+  dy.rightCols<3>().noalias() = ds.rightCols<3>() * e;
+  dq_dy.topLeftCorner<6, 6>() += dy;
+  dq_dz.topLeftCorner<6, 6>() += dz;
 }
 
 tire::TireKinematics VehicleFramework::tire_kinematics(const WheelContact& c,

@@ -19,6 +19,8 @@
 
 namespace rig::model::vehicle {
 
+class FreeBodies;
+
 class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
  public:
   /// Reads the wheels' spins and tire deflections from `state` and their pose, tire contact and
@@ -56,6 +58,9 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   [[nodiscard]] WheelContact contact(const Vector& y, const Vector& z, int i) const noexcept;
   [[nodiscard]] WheelContact contact(const Mat3& rot, const Vector& y, const Vector& z,
                                      int i) const noexcept;
+  /// The free bodies whose mounts act on the chassis (model/vehicle/free_body): their
+  /// reactions join q and their partials the chassis' corner of the Jacobians. None: null.
+  void attach_free_bodies(const FreeBodies* bodies) noexcept { free_bodies_ = bodies; }
   [[nodiscard]] int wheel_count() const noexcept { return wheel_count_; }
   [[nodiscard]] int axle_of(int wheel) const noexcept {
     return axle_of_[static_cast<std::size_t>(wheel)];
@@ -87,9 +92,13 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   void tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv, const Vector& y, const Vector& z,
                       Matrix& dq_dy, Matrix& dq_dz) const noexcept;
 
+  void free_body_jacobians(const Vector& y, const Vector& z, const Mat3& rot, const Mat3& e,
+                           Matrix& dq_dy, Matrix& dq_dz) const noexcept;
+
   const VehicleParams& p_;
   VehicleState& state_;
   const VehicleWorkspace& work_;
+  const FreeBodies* free_bodies_ = nullptr;
   road::Road road_;
   int wheel_count_;
   Eigen::Index n_;

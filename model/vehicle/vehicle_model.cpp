@@ -34,13 +34,16 @@ VehicleModel::~VehicleModel() = default;
 void VehicleModel::reset(double x_m, double y_m, double yaw_rad) noexcept {
   place_at_rest(state_, p_, x_m, y_m, yaw_rad);
   place_on_road(state_, p_, blocks_->framework());  // a surface: its height and slope there
+  place_free_bodies(p_, state_);
   work_.wheels.fill(WheelWork{});
   blocks_->update_contacts(0.0);
   blocks_->update_outputs();
 }
 
 void VehicleModel::set_forward_speed(double speed_mps) noexcept {
+  const Vec6 old_y = state_.framework_y.head<6>(), old_z = state_.framework_z.head<6>();
   state_.framework_z(0) = speed_mps;
+  carry_free_bodies(p_, old_y, old_z, state_);
   double carrier = 0;
   for (int i = 0; i < work_.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
@@ -131,6 +134,7 @@ void VehicleModel::write_outputs(Signals& s) const noexcept {
 
 void VehicleModel::fill_report(ModelReport& report) const noexcept {
   vehicle::fill_report(state_, inputs_, work_, report);
+  fill_free_body_report(p_, state_, report);
   mark_slip_validity(p_.slip_mask_speed_mps, report.units[0]);
 }
 

@@ -11,6 +11,7 @@
 #include "model/road/road.h"
 #include "model/tire/tmeasy_params.h"
 #include "model/vehicle/differential/differential_params.h"
+#include "model/vehicle/free_body/free_body_params.h"
 
 namespace rig::model::vehicle {
 
@@ -277,6 +278,8 @@ struct VehicleParams {
   /// means the direction of a tiny motion, not a slip ratio [m/s].
   double slip_mask_speed_mps = 0.5;
   FaultLimits fault_limits{};
+  /// Generic free bodies on mounts (`[[free_body]]`, model/vehicle/free_body); none by default.
+  std::vector<FreeBodyParams> free_bodies;
 };
 
 }  // namespace rig::model::vehicle

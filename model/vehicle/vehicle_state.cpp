@@ -29,6 +29,12 @@ void place_at_rest(VehicleState& s, const VehicleParams& params, double x_m, dou
   s.drivetrain_y.setZero();
   s.drivetrain_z << params.drivetrain.idle_speed_radps, 0;
   s.spin_radps.fill(0);
+  for (std::size_t i = 0; i < kMaxFreeBodies; ++i) {
+    s.free_body_y[i].setZero();
+    s.free_body_z[i].setZero();
+    s.seat_y[i].setZero();
+    s.seat_z[i].setZero();
+  }
   for (auto& d : s.tire_deflection_m) d.setZero();
   s.shaft_twist_rad.setZero();
   s.gear = 0;
@@ -57,6 +63,10 @@ bool is_finite(const VehicleState& s) noexcept {
             s.steering_y.allFinite() && s.steering_z.allFinite() && s.drivetrain_y.allFinite() &&
             s.drivetrain_z.allFinite() && s.shaft_twist_rad.allFinite() &&
             s.acceleration_mps2.allFinite();
+  for (std::size_t i = 0; i < kMaxFreeBodies; ++i) {
+    ok = ok && s.free_body_y[i].allFinite() && s.free_body_z[i].allFinite() &&
+         s.seat_y[i].allFinite() && s.seat_z[i].allFinite();
+  }
   for (std::size_t k = 0; k < s.spin_radps.size(); ++k) {
     ok = ok && std::isfinite(s.spin_radps[k]) && s.tire_deflection_m[k].allFinite() &&
          std::isfinite(s.rack_at_wheel_m[k]) && std::isfinite(s.knuckle_rate_mps[k]) &&

@@ -29,6 +29,12 @@ struct VehicleState {
   Eigen::Vector2d drivetrain_y = Eigen::Vector2d::Zero();  ///< engine and carrier angle
   Eigen::Vector2d drivetrain_z = Eigen::Vector2d::Zero();  ///< engine speed w_e, carrier w_c
   std::array<double, kMaxWheels> spin_radps{};             ///< wheel spin rates
+  /// Free bodies (model/vehicle/free_body), slot = `[[free_body]]` index: a cab's or engine's
+  /// [x, y, z (road frame), yaw, pitch, roll] and [v, omega] (own axes); a seat's height and rate.
+  std::array<Eigen::Matrix<double, 6, 1>, kMaxFreeBodies> free_body_y{};
+  std::array<Eigen::Matrix<double, 6, 1>, kMaxFreeBodies> free_body_z{};
+  std::array<Eigen::Matrix<double, 1, 1>, kMaxFreeBodies> seat_y{};
+  std::array<Eigen::Matrix<double, 1, 1>, kMaxFreeBodies> seat_z{};
   // ---- force elements (eq. 3) ----
   std::array<Eigen::Vector2d, kMaxWheels> tire_deflection_m{};  ///< x_e, y_e (eqs. 22-24)
   Eigen::VectorXd shaft_twist_rad;                              ///< one per driven wheel

@@ -69,6 +69,10 @@ inline void set_wheel_orientation(WheelWork& w, double steer_rad, double camber_
 
 struct VehicleWorkspace {
   int wheel_count = 0;
+  /// The step's look-ahead h (VehicleBlocks::update_contacts; 0 for outputs): a subsystem that
+  /// reads the chassis (the free bodies) takes it at y_V(k) + h K^-1 z_V(k), as the step
+  /// evaluates its own forces at its predicted coordinates (eq. 6).
+  double lookahead_s = 0;
   std::array<WheelWork, kMaxWheels> wheels{};
   // drive train (VehicleModel::begin_step from the step's start state: frozen over the step;
   // the wheel-spin stage for the carrier speed)

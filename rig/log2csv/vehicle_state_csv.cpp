@@ -109,6 +109,11 @@ class VehicleStateCsv final : public ChannelCsv {
       add_array_headers(h, Fields::kDiff, diffs_, has);
       add_array_headers(h, Fields::kDiffFlag, diffs_, has);
     }
+    if (bodies_ > 0) {  // free bodies: absent without any (the CSV of a vehicle without them)
+      h.emplace_back("num_bodies");
+      add_array_headers(h, Fields::kBody, bodies_, has);
+      add_array_headers(h, Fields::kBodyFlag, bodies_, has);
+    }
     return join_columns(h);
   }
 
@@ -119,6 +124,7 @@ class VehicleStateCsv final : public ChannelCsv {
       wheels_ = group_size(msg_, Fields::kWheel);
       joints_ = group_size(msg_, Fields::kJoint);
       diffs_ = group_size(msg_, Fields::kDiff);
+      bodies_ = group_size(msg_, Fields::kBody);
       sized_ = true;
     }
     line.add(event.timestamp_us);
@@ -142,6 +148,11 @@ class VehicleStateCsv final : public ChannelCsv {
       add_array_cells(line, msg_, Fields::kDiff, diffs_, has);
       add_array_cells(line, msg_, Fields::kDiffFlag, diffs_, has);
     }
+    if (bodies_ > 0) {
+      line.add(std::int64_t{msg_.num_bodies});
+      add_array_cells(line, msg_, Fields::kBody, bodies_, has);
+      add_array_cells(line, msg_, Fields::kBodyFlag, bodies_, has);
+    }
     return true;
   }
 
@@ -149,7 +160,7 @@ class VehicleStateCsv final : public ChannelCsv {
   const VehicleStateLayout& layout_;
   State msg_{};
   bool sized_ = false;
-  std::size_t units_ = 0, wheels_ = 0, joints_ = 0, diffs_ = 0;
+  std::size_t units_ = 0, wheels_ = 0, joints_ = 0, diffs_ = 0, bodies_ = 0;
 };
 
 }  // namespace

@@ -29,7 +29,7 @@ import rig_checks  # noqa: E402
 RIG, LOG2CSV, SRC, NAME = sys.argv[1:5]
 COLUMNS = ("sim_time_s", "unit0_", "unit1_", "wheel0_", "wheel1_", "wheel2_", "wheel3_", "wheel4_",
            "wheel5_", "steering_", "gear", "num_", "joint0_", "rack_", "torsion_bar_", "tie_rod_",
-           "brake_pressure_", "diff")
+           "brake_pressure_", "diff", "body")
 TMP = tempfile.mkdtemp(prefix=f"rig_maneuver_{NAME}_")
 # Configurations that run until stopped get a duration here.
 DURATION_S = {"bench": "5"}
@@ -803,6 +803,22 @@ def case_mu_split_acceleration_6x4(s, rows):
 
 
 summary, states = run_offline(config_path(NAME))
+# ---- issue 17 item 4: free bodies (model/vehicle/free_body/README.md)
+def case_sine_steer_tractor_cab(s, rows):
+    check(all(r["num_bodies"] == 3 for r in rows), "three free bodies: cab, engine, seat")
+    late = [r for r in rows if 3.0 <= r["sim_time_s"] < 9.0]
+    ay = max(abs(r["unit0_ay_mps2"]) for r in late)
+    roll = max(abs(r["body0_roll_rad"]) for r in late)
+    # the cab rolls against the frame: 0.02-0.03 rad at 0.9 m/s^2 (mounts 69 kN m/rad, the
+    # frame's own roll and roll acceleration add to the lateral load at the cab's CG)
+    check(0.6 < ay < 1.2, f"peak a_y {ay:.2f} m/s^2")
+    check(0.01 < roll < 0.06, f"peak cab roll relative to the frame {roll:.4f} rad")
+    check(all(r["body0_on_stop"] == 0 and r["body1_on_stop"] == 0 and r["body2_on_stop"] == 0
+              for r in rows), "no body on its stops")
+    seat = [r["body2_z_m"] for r in late]
+    check(-0.105 < min(seat) and max(seat) < -0.09, "seat near its static sag 97 mm")
+
+
 case = globals().get("case_" + NAME.replace("-", "_"))  # combination-x-y: case_combination_x_y
 if case is None:
     fail(f"no physical check for {NAME}: add case_{NAME.replace('-', '_')} to {__file__}")

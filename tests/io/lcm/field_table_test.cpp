@@ -49,6 +49,8 @@ TEST(VehicleStateFields, NamesAreUniqueInTheirGroupAndCarryTheirUnit) {
   expect_rows_named(Fields::kJoint, "joint", names);
   expect_rows_named(Fields::kDiff, "diff", names);
   expect_rows_named(Fields::kDiffFlag, "diff", names);
+  expect_rows_named(Fields::kBody, "body", names);
+  expect_rows_named(Fields::kBodyFlag, "body", names);
   expect_rows_named(Fields::kVehicle, "", names);
   expect_rows_named(Fields::kVehicleInt, "", names);
   for (const auto& row : Fields::kVehicle) {

@@ -67,7 +67,8 @@ def check_table():
         field_type, dim = fields[name]
         if lcm_type != field_type:
             fail(f"{name}: {lcm_type} in the table, {field_type} in vehicle_state_t.lcm")
-        expected_dim = None if group == "vehicle" else f"num_{group}s"
+        expected_dim = None if group == "vehicle" else (
+            "num_bodies" if group == "body" else f"num_{group}s")
         if dim != expected_dim:
             fail(f"{name}: a {group} row, but its .lcm dimension is {dim}")
     print(f"field table: {len(rows)} rows, vehicle_state_t: {len(fields)} fields")
@@ -196,7 +197,8 @@ def check_csv(type_name, csv_file, messages):
 
 def check_log2csv():
     values = Values()
-    state_counts = {"num_units": 2, "num_wheels": 5, "num_joints": 3, "num_diffs": 2}
+    state_counts = {"num_units": 2, "num_wheels": 5, "num_joints": 3, "num_diffs": 2,
+                    "num_bodies": 2}
     # Wheel i of unit wheel_unit[i]: small values, as the rig writes them (int8).
     wheel_unit = {"wheel_unit": [0, 0, 0, 1, 1]}
     messages = {

@@ -51,5 +51,7 @@ int main() {
   print_rows("joint", Fields::kJoint);
   print_rows("diff", Fields::kDiff);
   print_rows("diff", Fields::kDiffFlag);
+  print_rows("body", Fields::kBody);
+  print_rows("body", Fields::kBodyFlag);
   return 0;
 }

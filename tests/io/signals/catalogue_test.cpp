@@ -20,6 +20,7 @@ const std::string kSedan = kDir + "/config/rig.toml";
 const std::string kTruck = kDir + "/tests/io/signals/configs/truck.toml";
 const std::string kThreeUnits = kDir + "/tests/io/signals/configs/three-units.toml";
 const std::string kSedan4x4 = kDir + "/config/maneuvers/mu-split-acceleration-4x4.toml";
+const std::string kTractorCab = kDir + "/tests/io/signals/configs/tractor-cab.toml";
 
 // Per unit: 15 body quantities, 18 per wheel (17 doubles of the field table and slip_valid);
 // the vehicle rows with a catalogue name: 9 steering, 2 engine and the gear; 5 per joint; 4 per
@@ -48,6 +49,13 @@ TEST(Catalogue, NamesAndCountsFollowTheModelShape) {
   EXPECT_EQ(sedan.catalogue->find("unit1.drivetrain.diff1.locked"), nullptr);
   EXPECT_NE(awd.catalogue->find("unit1.drivetrain.diff3.output_b_speed_radps"), nullptr);
   EXPECT_EQ(awd.catalogue->find("unit1.drivetrain.diff4.locked"), nullptr);
+  // free bodies (issue 17 item 4): 12 doubles and on_stop per body; none without (above)
+  const RigConfig cab = load_config(kTractorCab);
+  EXPECT_EQ(cab.catalogue->entries().size(), count({3}, 0) + 3 * 13);  // 226
+  for (const char* name : {"body1.roll_rad", "body2.x_m", "body3.z_m", "body3.on_stop"})
+    EXPECT_NE(cab.catalogue->find(name), nullptr) << name;
+  EXPECT_EQ(cab.catalogue->find("body4.z_m"), nullptr);
+  EXPECT_EQ(truck.catalogue->find("body1.z_m"), nullptr);
   for (const char* name : {"unit1.axle2.right.load_n", "unit1.axle1.left.brake_pressure_pa",
                            "unit1.steering.overlay_angle_cmd_rad", "unit1.ignition_state",
                            "unit1.drivetrain.gear", "unit1.axle1.left.applied_brake_pressure_pa"})
@@ -62,7 +70,7 @@ TEST(Catalogue, NamesAndCountsFollowTheModelShape) {
 }
 
 TEST(Catalogue, ShapeMatchesTheConstructedModelsReport) {
-  for (const std::string& file : {kSedan, kTruck, kThreeUnits, kSedan4x4}) {
+  for (const std::string& file : {kSedan, kTruck, kThreeUnits, kSedan4x4, kTractorCab}) {
     const RigConfig c = load_config(file);
     const auto m = make_model(c);
     model::ModelReport r;
@@ -75,6 +83,7 @@ TEST(Catalogue, ShapeMatchesTheConstructedModelsReport) {
           << file;
     EXPECT_EQ(r.joint_count, shape.joint_count) << file;
     EXPECT_EQ(r.differential_count, shape.differential_count) << file;
+    EXPECT_EQ(r.body_count, shape.body_count) << file;
   }
 }
 

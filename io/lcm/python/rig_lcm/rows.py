@@ -46,7 +46,9 @@ class StructTable:
                 order.append(("scalar", f))
         for kind, item in order:
             if kind == "scalar":
-                self._picks.append((item, None))
+                # free bodies: no num_bodies column without any (as rig-log2csv)
+                if not (item == "num_bodies" and getattr(msg, item) == 0):
+                    self._picks.append((item, None))
                 continue
             for i in range(item[1]):
                 self._picks.extend((f, i) for f in groups[item])

@@ -1,0 +1,191 @@
+#include "model/vehicle/free_body/free_body.h"
+
+#include <cmath>
+
+namespace rig::model::vehicle {
+namespace {
+
+Vec3 vec3(const std::array<double, 3>& a) noexcept { return {a[0], a[1], a[2]}; }
+
+/// J = [I, -[p]x]: the velocity of point p from the speeds [v, omega] (own axes).
+Eigen::Matrix<double, 3, 6> point_jacobian(const Vec3& p) noexcept {
+  Eigen::Matrix<double, 3, 6> j;
+  j.leftCols<3>().setIdentity();
+  j.rightCols<3>() = -skew(p);
+  return j;
+}
+
+/// d(s)/d(y) = diag(R^T, E): from coordinate to speed-space displacements (K of y' = K^-1 z).
+void times_k(const Mat6& dq_ds, const Mat3& rot, const Mat3& e, Mat6& dq_dy) noexcept {
+  dq_dy.leftCols<3>() = dq_ds.leftCols<3>() * rot.transpose();
+  dq_dy.rightCols<3>() = dq_ds.rightCols<3>() * e;
+}
+
+}  // namespace
+
+FreeBody::FreeBody(const FreeBodyParams& p, const road::Road& road, VehicleState& state,
+                   const VehicleWorkspace& work, int slot)
+    : p_(p), road_(road), state_(state), work_(work), slot_(slot) {
+  mount_count_ = static_cast<int>(std::min<std::size_t>(p.mounts.size(), kMaxMounts));
+  const Vec3 position = vec3(p.position_m);
+  for (int i = 0; i < mount_count_; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    mounts_[k] = make_mount(p.mounts[k], position, p.through_margin_m);
+  }
+  inertia_ = vec3(p.inertia_kgm2);
+  crank_axis_ = vec3(p.crankshaft_axis).normalized();
+}
+
+FreeBody::Vector& FreeBody::coordinates() noexcept {
+  return state_.free_body_y[static_cast<std::size_t>(slot_)];
+}
+FreeBody::Vector& FreeBody::speeds() noexcept {
+  return state_.free_body_z[static_cast<std::size_t>(slot_)];
+}
+
+void FreeBody::kinematics_inverse(const Vector& y, Matrix& k_inv) const noexcept {
+  k_inv.setZero();
+  k_inv.topLeftCorner<3, 3>() = body_to_road(y(3), y(4), y(5));
+  k_inv.bottomRightCorner<3, 3>() = euler_rates_from_body_rates(y(4), y(5));
+}
+
+void FreeBody::mass_matrix(const Vector& y, Matrix& m) const noexcept {
+  (void)y;
+  m.setZero();
+  m.diagonal() << p_.mass_kg, p_.mass_kg, p_.mass_kg, inertia_;
+}
+
+RigidPose FreeBody::chassis_pose() const noexcept {
+  // the chassis where the framework will be when the body's predicted coordinates are
+  return predicted_pose(state_.framework_y, state_.framework_z, work_.lookahead_s);
+}
+
+double FreeBody::reaction_torque_nm() const noexcept {
+  return p_.kind == FreeBodyKind::kEngine ? work_.engine_torque_nm : 0.0;
+}
+
+void FreeBody::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
+  const RigidPose chassis = chassis_pose();
+  const RigidPose body = rigid_pose(y, z);
+  const Vec3& v = body.velocity_mps;
+  const Vec3& w = body.rate_radps;
+  Vec3 force = p_.mass_kg * (body.rot.transpose() * road_.gravity_mps2() - w.cross(v));
+  Vec3 moment = -w.cross(inertia_.cwiseProduct(w)) - reaction_torque_nm() * crank_axis_;
+  const Mat3 to_body = body.rot.transpose() * chassis.rot;
+  for (int i = 0; i < mount_count_; ++i) {
+    const Mount& m = mounts_[static_cast<std::size_t>(i)];
+    const Vec3 f = to_body * mount_force(m, chassis, body).force_n;
+    force += f;
+    moment += m.body_point.cross(f);
+  }
+  q << force, moment;
+}
+
+bool FreeBody::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
+                               Matrix& dq_dz) const noexcept {
+  const RigidPose chassis = chassis_pose();
+  const RigidPose body = rigid_pose(y, z);
+  const Mat3 a = chassis.rot.transpose() * body.rot;  // body axes -> chassis axes
+  const Mat3 wc = skew(chassis.rate_radps);
+  Mat6 dq_ds = Mat6::Zero();
+  dq_dz.setZero();
+  // gravity turns with the body: d(m R^T g)/d theta = [m R^T g]x
+  dq_ds.block<3, 3>(0, 3) = skew(p_.mass_kg * (body.rot.transpose() * road_.gravity_mps2()));
+  for (int i = 0; i < mount_count_; ++i) {
+    const Mount& m = mounts_[static_cast<std::size_t>(i)];
+    const MountForce mf = mount_force(m, chassis, body);
+    const Eigen::Matrix<double, 3, 6> j = point_jacobian(m.body_point);
+    const Eigen::Matrix<double, 3, 6> aj = a * j;  // d(deflection)/ds, chassis axes
+    const Mat3 k = chassis_axes_matrix(m, mf.rate_stiffness);
+    const Mat3 c = chassis_axes_matrix(m, m.damping);
+    // d(deflection rate)/ds: the chassis turning under the body, the body's own velocity turning
+    Eigen::Matrix<double, 3, 6> dd_ds = -wc * aj;
+    dd_ds.rightCols<3>() -= a * skew(body.velocity_mps + body.rate_radps.cross(m.body_point));
+    const Eigen::Matrix<double, 3, 6> df_ds = -k * aj - c * dd_ds;  // chassis axes
+    const Vec3 f_body = a.transpose() * mf.force_n;
+    dq_ds.noalias() += j.transpose() * (a.transpose() * df_ds);
+    dq_ds.rightCols<3>().noalias() += j.transpose() * skew(f_body);  // the force turns with it
+    dq_dz.noalias() -= aj.transpose() * c * aj;
+  }
+  times_k(dq_ds, body.rot, body_rates_from_euler_rates(y(4), y(5)), dq_dy);
+  return true;
+}
+
+Vec6 FreeBody::chassis_load(const RigidPose& chassis) const noexcept {
+  const RigidPose body = rigid_pose(state_.free_body_y[static_cast<std::size_t>(slot_)],
+                                    state_.free_body_z[static_cast<std::size_t>(slot_)]);
+  Vec3 force = Vec3::Zero();
+  // the drive torque's reaction: +T about the crank on the chassis (through the drive line)
+  Vec3 moment = reaction_torque_nm() * (chassis.rot.transpose() * (body.rot * crank_axis_));
+  for (int i = 0; i < mount_count_; ++i) {
+    const Mount& m = mounts_[static_cast<std::size_t>(i)];
+    const Vec3 f = -mount_force(m, chassis, body).force_n;
+    force += f;
+    moment += m.chassis_point.cross(f);
+  }
+  Vec6 q;
+  q << force, moment;
+  return q;
+}
+
+void FreeBody::chassis_jacobians(const RigidPose& chassis, Mat6& dq_ds,
+                                 Mat6& dq_dz) const noexcept {
+  const RigidPose body = rigid_pose(state_.free_body_y[static_cast<std::size_t>(slot_)],
+                                    state_.free_body_z[static_cast<std::size_t>(slot_)]);
+  const Mat3 rt = chassis.rot.transpose();
+  const Mat3 wc = skew(chassis.rate_radps);
+  const Vec3 torque = reaction_torque_nm() * (rt * (body.rot * crank_axis_));
+  dq_ds.block<3, 3>(3, 3) += skew(torque);  // the reaction turns with the chassis
+  for (int i = 0; i < mount_count_; ++i) {
+    const Mount& m = mounts_[static_cast<std::size_t>(i)];
+    const MountForce mf = mount_force(m, chassis, body);
+    const Vec3 pb = body.position_m + body.rot * m.body_point;
+    const Vec3 vb = body.rot * (body.velocity_mps + body.rate_radps.cross(m.body_point));
+    const Vec3 body_point = rt * (pb - chassis.position_m);             // = rel + chassis point
+    const Eigen::Matrix<double, 3, 6> jd = point_jacobian(body_point);  // d(deflection) = -jd ds
+    Eigen::Matrix<double, 3, 6> dd_ds;
+    dd_ds.leftCols<3>() = wc;
+    dd_ds.rightCols<3>() = skew(rt * vb) - wc * skew(body_point);
+    const Mat3 k = chassis_axes_matrix(m, mf.rate_stiffness);
+    const Mat3 c = chassis_axes_matrix(m, m.damping);
+    const Eigen::Matrix<double, 6, 3> jt = point_jacobian(m.chassis_point).transpose();
+    // the chassis gets F = K d + C d' (minus the force on the body)
+    dq_ds.noalias() += jt * (-k * jd + c * dd_ds);
+    dq_dz.noalias() -= jt * c * jd;
+  }
+}
+
+double FreeBody::beyond_stop_m(const RigidPose& chassis) const noexcept {
+  const RigidPose body = rigid_pose(state_.free_body_y[static_cast<std::size_t>(slot_)],
+                                    state_.free_body_z[static_cast<std::size_t>(slot_)]);
+  double beyond = -1e9;
+  for (int i = 0; i < mount_count_; ++i)
+    beyond = std::max(
+        beyond, mount_force(mounts_[static_cast<std::size_t>(i)], chassis, body).beyond_stop_m);
+  return beyond;
+}
+
+MountForce FreeBody::mount_force_now(int i) const noexcept {
+  const RigidPose body = rigid_pose(state_.free_body_y[static_cast<std::size_t>(slot_)],
+                                    state_.free_body_z[static_cast<std::size_t>(slot_)]);
+  return mount_force(mounts_[static_cast<std::size_t>(i)],
+                     rigid_pose(state_.framework_y, state_.framework_z), body);
+}
+
+RelativeMotion relative_motion(const RigidPose& chassis, const RigidPose& body,
+                               const Vec3& design_position_m) noexcept {
+  RelativeMotion out;
+  const Mat3 rt = chassis.rot.transpose();
+  const Vec3 rel = rt * (body.position_m - chassis.position_m);
+  out.position_m = rel - design_position_m;
+  const Mat3 a = rt * body.rot;  // = Rz(yaw) Ry(pitch) Rx(roll) of the relative attitude
+  out.angles_rad = Vec3(std::atan2(a(2, 1), a(2, 2)), -std::asin(std::clamp(a(2, 0), -1.0, 1.0)),
+                        std::atan2(a(1, 0), a(0, 0)));
+  const Vec3 vb = body.rot * body.velocity_mps;
+  const Vec3 vc = chassis.rot * chassis.velocity_mps;
+  out.velocity_mps = rt * (vb - vc) - chassis.rate_radps.cross(rel);
+  out.rate_radps = a * body.rate_radps - chassis.rate_radps;
+  return out;
+}
+
+}  // namespace rig::model::vehicle
