@@ -61,6 +61,7 @@ VehicleFramework::VehicleFramework(const VehicleParams& p, VehicleState& state,
     // Rill 2011 sec. 3.2: probes at 0.1 r_0 fore and aft, 0.3 B left and right
     probes_[k] = {0.1 * a.tire.tmeasy.radius_unloaded_m, 0.3 * a.tire.tmeasy.bore.contact_width_m};
   }
+  setup_rigid_axles();
 }
 
 Vec3 VehicleFramework::wheel_centre(int i, double s) const noexcept {
@@ -87,6 +88,10 @@ void VehicleFramework::mass_matrix(const Vector& y, Matrix& m) const noexcept {
   m.block<3, 3>(3, 3) = inertia_;
   for (int i = 0; i < wheel_count_; ++i) {
     const auto k = static_cast<std::size_t>(i);
+    if (rigid_[k / 2]) {
+      if (i % 2 == 0) rigid_mass_matrix(i / 2, y, m);
+      continue;
+    }
     const double mw = p_.axles[k / 2].unsprung_mass_kg;
     const Vec3 r = wheel_centre(i, y(6 + i));
     const Vec3 es = hub_axis(i);
@@ -117,6 +122,7 @@ WheelForces VehicleFramework::wheel_forces(const Vector& y, const Vector& z, int
 WheelContact VehicleFramework::contact(const Mat3& rot, const Vector& y, const Vector& z,
                                        int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
+  if (rigid_[k / 2]) return rigid_contact(rot, y, z, i);
   const double r0 = p_.axles[k / 2].tire.tmeasy.radius_unloaded_m;
   if (road_.is_plane()) {
     return wheel_contact(road_, rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3),
@@ -132,7 +138,10 @@ LocalRoadPlane VehicleFramework::road_plane(const Mat3& rot, const Vector& y, co
                                             int i, double lookahead_s,
                                             ProbeHints& hints) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  const Vec3 r = wheel_centre(i, y(6 + i));
+  const Vec3 r = rigid_[k / 2] ? rigid_wheel_point(rigid_geometry_[k / 2], i % 2,
+                                                   y(6 + 2 * (i / 2)), y(7 + 2 * (i / 2)))
+                                     .centre_m
+                               : wheel_centre(i, y(6 + i));
   const Vec3 velocity = rot * (z.segment<3>(0) + z.segment<3>(3).cross(r));  // road frame
   const Vec3 centre = y.head<3>() + rot * r + lookahead_s * velocity;
   const Vec3 spin = rot * work_.wheels[k].spin_axis;
@@ -168,6 +177,15 @@ WheelForces VehicleFramework::wheel_forces(const WheelContact& c, const Vector& 
     out.force_x_n = f.long_force_n;
     out.force_y_n = f.lat_force_n;
   }
+  if (rigid_[k / 2]) {  // the axle's spring on this side, its travel, heave and roll
+    const Eigen::Index h = 6 + 2 * (i / 2);
+    out.suspension_n = axle_suspension_forces(i / 2, y, z).spring_n[k % 2];
+    out.rigid_axle = true;
+    out.axle_heave_m = y(h);
+    out.axle_roll_rad = y(h + 1);
+    out.hub_travel_m = rigid_hub_travel_m(a, i % 2, y(h), y(h + 1));
+    return out;
+  }
   // Suspension: preloaded spring, bump/rebound damper, stops, anti-roll bar (wheel rates).
   const double s = y(6 + i), sd = z(6 + i), s_other = y(6 + (i ^ 1));
   double fs = preload_[k] + a.spring_stiffness_npm * s +
@@ -191,6 +209,10 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
   Vec3 tr = -w.cross(inertia_ * w);
   for (int i = 0; i < wheel_count_; ++i) {
     const auto k = static_cast<std::size_t>(i);
+    if (rigid_[k / 2]) {
+      rigid_wheel_applied(i, rot, y, z, g, ft, tr, q);
+      continue;
+    }
     const double mw = p_.axles[k / 2].unsprung_mass_kg;
     const double sd = z(6 + i);
     const Vec3 r = wheel_centre(i, y(6 + i));
@@ -208,6 +230,12 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
     tr += r.cross(f) + m_contact - m_contact.dot(c.spin_axis) * c.spin_axis -
           (work_.wheels[k].shaft_torque_nm + work_.wheels[k].brake_torque_nm) * c.spin_axis;
     q(6 + i) = es.dot(f) - wf.suspension_n;  // J_v hub column e_s
+  }
+  if (any_rigid_) {
+    for (int a = 0; a < wheel_count_ / 2; ++a) {
+      if (rigid_[static_cast<std::size_t>(a)])
+        q.segment<2>(6 + 2 * a) += axle_suspension_forces(a, y, z).q;
+    }
   }
   q.segment<3>(0) = ft;
   q.segment<3>(3) = tr;
@@ -280,6 +308,11 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
   const Mat3 rot = body_to_road(y(3), y(4), y(5));
   const Mat3 e_inv = body_rates_from_euler_rates(y(4), y(5));  // K_BB angle part
   for (int i = 0; i < wheel_count_; ++i) {
+    if (rigid_[static_cast<std::size_t>(i / 2)]) {
+      if (i % 2 == 0) rigid_suspension_jacobians(i / 2, y, z, dq_dy, dq_dz);
+      rigid_tire_jacobians(i, rot, e_inv, y, z, dq_dy, dq_dz);
+      continue;
+    }
     suspension_jacobians(i, y, z, dq_dy, dq_dz);
     tire_jacobians(i, rot, e_inv, y, z, dq_dy, dq_dz);
   }

@@ -4,6 +4,7 @@
 /// filled by io/config from TOML. No behaviour here.
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -47,8 +48,33 @@ struct AxleKinematicsParams {
   bool bicubic = true;  ///< Catmull-Rom bicubic (C1) or bilinear interpolation
 };
 
+/// How an axle's two wheels move against the body: each on its own hub travel (independent
+/// suspension, eq. 29) or together on one rigid axle body (rigid_axle.h).
+enum class AxleKind : std::uint8_t { kIndependent, kRigid };
+/// What guides a rigid axle laterally, and so sets its roll centre (rigid_axle.h).
+enum class AxleGuidance : std::uint8_t { kPanhard, kFourLink, kLeaf };
+
+/// A rigid (solid, beam) axle: one body carrying both wheels, with heave and roll against the
+/// body (model/vehicle/rigid_axle.h). `[axle.rigid]` of a `[[axle]] kind = "rigid"`.
+struct RigidAxleParams {
+  double mass_kg = 700;                   ///< the axle with its wheels, hubs and brakes
+  double roll_inertia_kgm2 = 300;         ///< about its centre, longitudinal axis
+  double spring_track_m = 1.0;            ///< lateral spacing of the two springs (and stops)
+  double damper_track_m = 1.0;            ///< lateral spacing of the two dampers
+  double anti_roll_stiffness_nmprad = 0;  ///< the bar, on the axle's roll against the body
+  /// Roll steer: the axle's steer (gamma of both wheels, + front to the left) per axle roll
+  /// against the body (+ left wheel up) [rad/rad].
+  double roll_steer = 0;
+  AxleGuidance guidance = AxleGuidance::kPanhard;
+  /// The roll centre above the ground at design height, derived from the guidance's geometry
+  /// by io/config (rigid_axle.h: roll_centre_height_m); the axle rolls about it.
+  double roll_centre_height_m = 0.5;
+};
+
 /// One axle: two wheels at +-track/2, hub travel guided by the kinematics of eq. (29).
 struct AxleParams {
+  AxleKind kind = AxleKind::kIndependent;
+  RigidAxleParams rigid{};  ///< kind == kRigid only
   double position_x_m = 0;  ///< wheel centre x relative to the sprung-mass CG (forward +)
   double track_m = 1.55;
   double unsprung_mass_kg = 40;         ///< per wheel

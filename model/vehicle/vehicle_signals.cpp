@@ -107,7 +107,7 @@ void fill_wheel(const VehicleState& state, const VehicleInputs& in, const Vehicl
   r.load_n = w.out.load_n;
   r.deflection_x_m = state.tire_deflection_m[k](0);
   r.deflection_y_m = state.tire_deflection_m[k](1);
-  r.hub_travel_m = state.framework_y(6 + i);
+  r.hub_travel_m = w.out.rigid_axle ? w.out.hub_travel_m : state.framework_y(6 + i);
   r.steer_angle_rad = w.steer_rad;
   r.brake_torque_nm = w.brake_torque_nm;
   r.brake_pressure_pa = in.brake_pressure_pa[k];

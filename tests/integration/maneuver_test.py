@@ -191,6 +191,17 @@ def case_step_steer_iso7401(s, rows):
     check(peak < 1.2 * r_end, f"overshoot {100 * (peak / r_end - 1):.1f} % (< 20 %)")
 
 
+def case_step_steer_truck_rigid(s, rows):
+    # issue 17: the truck on rigid axles; tests/model/vehicle/rigid_axle_test.cpp: a_y ~1.5 m/s^2
+    end = at(rows, 6.0)
+    ay_end = end["unit0_ay_mps2"]
+    check(1.0 < ay_end < 2.5, f"steady a_y {ay_end:.3f} m/s^2")
+    late = [r["unit0_wz_radps"] for r in rows if r["sim_time_s"] >= 4.5]
+    check(max(late) - min(late) < 0.02 * abs(end["unit0_wz_radps"]),
+          "yaw rate settled over 4.5-6 s (no oscillation at h = 1 ms)")
+    check(end["unit0_roll_rad"] > 0.003, f"body roll {end['unit0_roll_rad']:.4f} rad to the outside")
+
+
 def case_circle_iso4138(s, rows):
     ay = [abs(r["unit0_ay_mps2"]) for r in rows]
     check(max(ay) > 7.0, f"a_y reaches {max(ay):.2f} m/s^2 (> 7, saturation near mu g)")

@@ -487,8 +487,9 @@ TEST(VehicleConfig, ManeuverFilesNameTheirVehicleAndRunAtOneMillisecond) {
     EXPECT_NEAR(s[Signal::kVehicleSpeed], settings.initial_speed_mps, 0.5) << entry.path();
   }
   // + weave, parking effort (0 and 5 km/h), returnability (issue 15); + the Belgian block (sedan,
-  // truck), sine-wave road, ISO 8608 class C, cleat, mu-jump and mu-split braking (issue 16)
-  EXPECT_EQ(files, 16);
+  // truck), sine-wave road, ISO 8608 class C, cleat, mu-jump and mu-split braking (issue 16);
+  // + the step steer of the truck on rigid axles (issue 17)
+  EXPECT_EQ(files, 17);
 }
 
 TEST(Vehicle, TruckStepSteerSettlesAtOneAndTwoMilliseconds) {
