@@ -121,6 +121,8 @@ void fill_wheel(const VehicleState& state, const VehicleInputs& in, const Vehicl
   r.road_normal_y = w.road.normal.y();
   r.road_normal_z = w.road.normal.z();
   r.road_mu = w.road_friction;
+  r.axle_heave_m = w.out.axle_heave_m;
+  r.axle_roll_rad = w.out.axle_roll_rad;
 }
 
 }  // namespace

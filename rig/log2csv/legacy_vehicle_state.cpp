@@ -102,7 +102,9 @@ bool decode_v1(const Event& event, State& msg) {
   return true;
 }
 
-bool v1_has_row(std::string_view name) { return !name.starts_with("wheel_road_"); }
+bool v1_has_row(std::string_view name) {
+  return !name.starts_with("wheel_road_") && !name.starts_with("wheel_axle_");
+}
 
 constexpr VehicleStateLayout kCurrent{"rig.vehicle_state_t", decode_current, has_every_row};
 constexpr VehicleStateLayout kV1{"rig.vehicle_state_t (v1: before the wheel_road_ fields)",

@@ -200,6 +200,13 @@ def case_step_steer_truck_rigid(s, rows):
     check(max(late) - min(late) < 0.02 * abs(end["unit0_wz_radps"]),
           "yaw rate settled over 4.5-6 s (no oscillation at h = 1 ms)")
     check(end["unit0_roll_rad"] > 0.003, f"body roll {end['unit0_roll_rad']:.4f} rad to the outside")
+    # each rigid axle's heave and roll, alike on both its wheels; the hub travel follows from them
+    roll = end["wheel2_axle_roll_rad"]
+    check(roll < -0.002 and end["wheel3_axle_roll_rad"] == roll,
+          f"drive axle 1 rolls against the body: {roll:.5f} rad on both wheels")
+    hub = end["wheel2_axle_heave_m"] + 0.5 * 1.85 * roll
+    check(abs(end["wheel2_hub_travel_m"] - hub) < 1e-12,
+          f"hub travel = heave + track/2 roll ({end['wheel2_hub_travel_m']:.6f} m)")
 
 
 def case_circle_iso4138(s, rows):

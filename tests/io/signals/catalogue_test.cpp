@@ -25,8 +25,9 @@ const std::string kThreeUnits = kDir + "/tests/io/signals/configs/three-units.to
 // Inputs: 12 of unit 1 and per unit 2 circuits and one pressure per wheel.
 constexpr std::size_t count(std::initializer_list<int> axles, int joints) {
   std::size_t n = 12 + 12 + 5 * static_cast<std::size_t>(joints);
-  // per wheel: 19, and the road under it (issue 16: road_z_m, road_normal_x/y/z, road_mu)
-  for (const int a : axles) n += 2 + 15 + static_cast<std::size_t>(2 * a) * (19 + 5);
+  // per wheel: 19, and the road under it (issue 16: road_z_m, road_normal_x/y/z, road_mu), and
+  // its rigid axle's heave and roll (issue 17: axle_heave_m, axle_roll_rad)
+  for (const int a : axles) n += 2 + 15 + static_cast<std::size_t>(2 * a) * (19 + 5 + 2);
   return n;
 }
 
@@ -34,10 +35,10 @@ TEST(Catalogue, NamesAndCountsFollowTheModelShape) {
   const RigConfig sedan = load_config(kSedan);
   const RigConfig truck = load_config(kTruck);
   const RigConfig three = load_config(kThreeUnits);
-  EXPECT_EQ(sedan.catalogue->entries().size(), count({2}, 0));        // 137
-  EXPECT_EQ(truck.catalogue->entries().size(), count({3}, 0));        // 185
-  EXPECT_EQ(three.catalogue->entries().size(), count({2, 2, 2}, 2));  // 373
-  EXPECT_EQ(sedan.catalogue->entries().size(), 137u);
+  EXPECT_EQ(sedan.catalogue->entries().size(), count({2}, 0));        // 145
+  EXPECT_EQ(truck.catalogue->entries().size(), count({3}, 0));        // 197
+  EXPECT_EQ(three.catalogue->entries().size(), count({2, 2, 2}, 2));  // 397
+  EXPECT_EQ(sedan.catalogue->entries().size(), 145u);
   for (const char* name : {"unit1.axle2.right.load_n", "unit1.axle1.left.brake_pressure_pa",
                            "unit1.steering.overlay_angle_cmd_rad", "unit1.ignition_state",
                            "unit1.drivetrain.gear", "unit1.axle1.left.applied_brake_pressure_pa"})

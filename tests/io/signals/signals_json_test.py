@@ -37,9 +37,9 @@ LEGACY = ["steering_wheel_angle_cmd_rad", "steering_wheel_torque_cmd_nm", "assis
           "brake_pressure_fl_pa", "brake_pressure_fr_pa", "brake_pressure_rl_pa",
           "brake_pressure_rr_pa", "position_x_m", "position_y_m", "heading_rad"]
 
-for config, count in [(SRC / "config/rig.toml", 137),
-                      (SRC / "tests/io/signals/configs/truck.toml", 185),
-                      (SRC / "tests/io/signals/configs/three-units.toml", 373)]:
+for config, count in [(SRC / "config/rig.toml", 145),
+                      (SRC / "tests/io/signals/configs/truck.toml", 197),
+                      (SRC / "tests/io/signals/configs/three-units.toml", 397)]:
     entries = catalogue(config)
     check(len(entries) == count, f"{config}: {len(entries)} entries, expected {count}")
     seen = set()
