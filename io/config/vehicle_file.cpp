@@ -260,6 +260,37 @@ AxleParams read_axle(StrictTable t, const std::map<std::string, TireParams>& tir
   return a;
 }
 
+/// [[load_sharing]]: a bogie of adjacent axles sharing its load (model/vehicle/load_sharing.h).
+model::vehicle::LoadSharingParams read_load_sharing(StrictTable t, const VehicleParams& p) {
+  model::vehicle::LoadSharingParams g;
+  const std::string kind = t.choice("kind", "", {"air_springs", "walking_beam"});
+  g.kind = kind == "walking_beam" ? model::vehicle::LoadSharingKind::kWalkingBeam
+                                  : model::vehicle::LoadSharingKind::kAirSprings;
+  const std::vector<long long> axles = t.integers("axles", model::kMaxWheelsPerUnit / 2);
+  const auto n = static_cast<long long>(p.axles.size());
+  for (std::size_t i = 0; i < axles.size(); ++i) {
+    if (axles[i] < 1 || axles[i] > n || (i > 0 && axles[i] != axles[i - 1] + 1))
+      throw t.error("axles", "the bogie's axles: adjacent axle numbers from 1 to " +
+                                 std::to_string(n) + ", front to rear (e.g. [2, 3, 4])");
+  }
+  if (axles.size() < 2) throw t.error("axles", "a bogie shares its load among 2 or more axles");
+  g.first_axle = static_cast<int>(axles.front() - 1);
+  g.axle_count = static_cast<int>(axles.size());
+  for (long long a : axles) {
+    if (p.axles[static_cast<std::size_t>(a - 1)].kind != model::vehicle::AxleKind::kIndependent)
+      throw t.error("axles", "axle " + std::to_string(a) +
+                                 " is rigid: load sharing acts on independent axles only");
+  }
+  if (g.kind == model::vehicle::LoadSharingKind::kWalkingBeam) {
+    if (g.axle_count != 2) throw t.error("axles", "a walking beam carries two axles");
+    const double x1 = p.axles[static_cast<std::size_t>(g.first_axle)].position_x_m;
+    const double x2 = p.axles[static_cast<std::size_t>(g.first_axle + 1)].position_x_m;
+    g.pivot_x_m = t.number_in("pivot_x_m", x2 + 0.01, x1 - 0.01);
+  }
+  t.finish();
+  return g;
+}
+
 /// The built-in EPS's active return (steering/README.md "active return"); off without its keys.
 void read_active_return(StrictTable& t, model::vehicle::ActiveReturnParams& r) {
   r.torque_max_nm = t.number_in("active_return_torque_nm", 0.0, 0, 100);
@@ -448,6 +479,22 @@ void check_axle_order(std::vector<StrictTable>& tables, const std::vector<AxlePa
 
 }  // namespace
 
+/// Every [[load_sharing]] bogie; an axle in two of them is an error.
+void read_bogies(StrictTable& t, VehicleParams& p) {
+  const std::vector<StrictTable> bogies =
+      t.has("load_sharing") ? t.tables("load_sharing", model::kMaxWheelsPerUnit / 4)
+                            : std::vector<StrictTable>{};
+  for (const StrictTable& g : bogies) {
+    p.load_sharing.push_back(read_load_sharing(g, p));
+    for (const auto& other : p.load_sharing) {
+      const auto& last = p.load_sharing.back();
+      if (&other != &last && other.first_axle < last.first_axle + last.axle_count &&
+          last.first_axle < other.first_axle + other.axle_count)
+        throw t.error("load_sharing", "an axle is in two [[load_sharing]] bogies");
+    }
+  }
+}
+
 VehicleParams load_vehicle_file(const std::filesystem::path& file) {
   const toml::table root = load_toml_file(file);
   StrictTable t(root, file, "vehicle");
@@ -486,6 +533,7 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file) {
     throw t.error("axle", "needs 1 to 6 [[axle]] tables");
   }
   check_axle_order(axle_tables, p.axles);
+  read_bogies(t, p);
   // A trailer (no steered, no driven axle) may leave out [steering] and [drivetrain].
   bool any_steered = false, any_driven = false;
   for (const auto& a : p.axles) {

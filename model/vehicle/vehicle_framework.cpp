@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include <Eigen/LU>
-
 #include "model/tire/tmeasy_tire.h"
 #include "model/tire/vertical_tire_force.h"
 
@@ -16,43 +14,27 @@ VehicleFramework::VehicleFramework(const VehicleParams& p, VehicleState& state,
       work_(work),
       road_(p.road),
       wheel_count_(2 * static_cast<int>(p.axles.size())),
-      n_(6 + 2 * static_cast<Eigen::Index>(p.axles.size())) {
+      n_(6 + 2 * static_cast<Eigen::Index>(p.axles.size())),
+      shares_(axle_shares(p)) {
   const double g = p.road.gravity_mps2;
   const auto& c = p.chassis;
   inertia_ << c.inertia_kgm2[0], 0, -c.inertia_xz_kgm2, 0, c.inertia_kgm2[1], 0, -c.inertia_xz_kgm2,
       0, c.inertia_kgm2[2];
   total_mass_kg_ = c.mass_kg;
   // Static loads of the sprung mass on the springs (heave + pitch of a rigid body on linear
-  // springs; the lever rule for two axles): the springs are preloaded so that the design
-  // position is at zero hub travel.
-  double sk = 0, skx = 0, skxx = 0;
-  for (const auto& a : p.axles) {
-    sk += 2 * a.spring_stiffness_npm;
-    skx += 2 * a.spring_stiffness_npm * a.position_x_m;
-    skxx += 2 * a.spring_stiffness_npm * a.position_x_m * a.position_x_m;
-  }
-  Eigen::Vector2d heave_pitch;
-  if (!c.supported) {
-    Eigen::Matrix2d a2;
-    a2 << sk, -skx, skx, -skxx;
-    heave_pitch =
-        a2.lu().solve(Eigen::Vector2d(c.mass_kg * g + c.payload_n, c.payload_n * c.payload_x_m));
-  } else {
-    // held at design height at x_s (heave = x_s pitch) by a support force F_s (up): unknowns
-    // heave, pitch, F_s from the force and moment balance (a 1-axle trailer is determinate)
-    Eigen::Matrix3d a3;
-    a3 << sk, -skx, 1, skx, -skxx, c.support_x_m, 1, -c.support_x_m, 0;
-    const Eigen::Vector3d x =
-        a3.lu().solve(Eigen::Vector3d(c.mass_kg * g + c.payload_n, c.payload_n * c.payload_x_m, 0));
-    heave_pitch = x.head<2>();
-    support_load_n_ = x(2);
-  }
+  // springs; the lever rule for two axles; a load-sharing bogie one spring): the springs are
+  // preloaded so that the design position is at zero hub travel.
+  const Eigen::Vector2d heave_pitch = static_heave_pitch(p, shares_, support_load_n_);
   for (int i = 0; i < wheel_count_; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const auto& a = p.axles[k / 2];
     axle_of_[k] = i / 2;
     total_mass_kg_ += a.unsprung_mass_kg;
-    preload_[k] = a.spring_stiffness_npm * (heave_pitch(0) - a.position_x_m * heave_pitch(1));
+    const AxleShare& sh = shares_[k / 2];
+    preload_[k] =
+        sh.group < 0
+            ? a.spring_stiffness_npm * (heave_pitch(0) - a.position_x_m * heave_pitch(1))
+            : sh.weight * sh.group_rate_npm * (heave_pitch(0) - sh.group_x_m * heave_pitch(1));
     const double tire_load = preload_[k] + a.unsprung_mass_kg * g;
     const double centre_height =
         a.tire.tmeasy.radius_unloaded_m - tire_load / a.tire.tmeasy.vertical_stiffness_npm;
@@ -188,8 +170,9 @@ WheelForces VehicleFramework::wheel_forces(const WheelContact& c, const Vector& 
   }
   // Suspension: preloaded spring, bump/rebound damper, stops, anti-roll bar (wheel rates).
   const double s = y(6 + i), sd = z(6 + i), s_other = y(6 + (i ^ 1));
-  double fs = preload_[k] + a.spring_stiffness_npm * s +
-              (sd > 0 ? a.damper_bump_nspm : a.damper_rebound_nspm) * sd;
+  const double spring =
+      shares_[k / 2].group < 0 ? a.spring_stiffness_npm * s : shared_spring_n(i, y);
+  double fs = preload_[k] + spring + (sd > 0 ? a.damper_bump_nspm : a.damper_rebound_nspm) * sd;
   if (s > a.bump_stop_travel_m) fs += a.stop_stiffness_npm * (s - a.bump_stop_travel_m);
   if (s < -a.rebound_stop_travel_m) fs += a.stop_stiffness_npm * (s + a.rebound_stop_travel_m);
   fs += a.anti_roll_stiffness_npm * (s - s_other);
@@ -247,7 +230,12 @@ void VehicleFramework::suspension_jacobians(int i, const Vector& y, const Vector
   const AxleParams& ax = p_.axles[static_cast<std::size_t>(i / 2)];
   const Eigen::Index h = 6 + i;
   const double s = y(h);
-  double stiff = ax.spring_stiffness_npm + ax.anti_roll_stiffness_npm;
+  const AxleShare& sh = shares_[static_cast<std::size_t>(i / 2)];
+  // in a load-sharing group the diagonal w_i^2 k_g; the other axles' terms w_i w_j k_g couple
+  // leaves of the arrowhead and stay lagged (soft: the group's heave rate is the springs')
+  double stiff =
+      (sh.group < 0 ? ax.spring_stiffness_npm : sh.weight * sh.weight * sh.group_rate_npm) +
+      ax.anti_roll_stiffness_npm;
   if (s > ax.bump_stop_travel_m || s < -ax.rebound_stop_travel_m) stiff += ax.stop_stiffness_npm;
   dq_dy(h, h) -= stiff;
   dq_dy(h, 6 + (i ^ 1)) += ax.anti_roll_stiffness_npm;
@@ -325,6 +313,14 @@ tire::TireKinematics VehicleFramework::tire_kinematics(const WheelContact& c,
   return {
       c.vx_mps, c.vy_mps, state_.spin_radps[k],
       tire::dynamic_rolling_radius(p_.axles[k / 2].tire.tmeasy.radius_unloaded_m, c.penetration_m)};
+}
+
+double VehicleFramework::shared_spring_n(int i, const Vector& y) const noexcept {
+  const AxleShare& sh = shares_[static_cast<std::size_t>(i / 2)];
+  double travel = 0;  // the group's weighted travel on this side
+  for (int j = sh.first_axle; j < sh.first_axle + sh.axle_count; ++j)
+    travel += shares_[static_cast<std::size_t>(j)].weight * y(6 + 2 * j + i % 2);
+  return sh.weight * sh.group_rate_npm * travel;
 }
 
 }  // namespace rig::model::vehicle

@@ -14,6 +14,7 @@
 
 #include "model/road/road.h"
 #include "model/solver/mechanical_block.h"
+#include "model/vehicle/load_sharing.h"
 #include "model/vehicle/rigid_axle.h"
 #include "model/vehicle/vehicle_state.h"
 #include "model/vehicle/vehicle_workspace.h"
@@ -128,8 +129,10 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   std::array<Vec3, kMaxWheels> mount_{};
   std::array<double, kMaxWheels> preload_{};
   std::array<ContactProbes, kMaxWheels> probes_{};  ///< dx = 0.1 r_0, dy = 0.3 B per wheel
-  static constexpr std::size_t kMaxAxles = kMaxWheels / 2;
   std::array<bool, kMaxAxles> rigid_{};
+  AxleShares shares_{};  ///< load-sharing groups (load_sharing.h)
+  /// The spring force of wheel i's axle in its load-sharing group: w_i k_g sum_j w_j s_j.
+  [[nodiscard]] double shared_spring_n(int i, const Vector& y) const noexcept;
   std::array<RigidAxleGeometry, kMaxAxles> rigid_geometry_{};
   std::array<SpringDamperAxleSuspension, kMaxAxles> default_suspension_{};
   std::array<const AxleSuspension*, kMaxAxles> suspension_{};

@@ -286,10 +286,22 @@ struct FaultLimits {
   double rate_radps = 10;  ///< angular rate magnitude (body axes)
 };
 
+/// A load-sharing bogie (model/vehicle/load_sharing.h): adjacent independent axles whose
+/// springs share the load by a fixed split - a walking beam (two axles, the beam pivoted at
+/// pivot_x_m) or connected air springs (equal shares). `[[load_sharing]]` of the vehicle file.
+enum class LoadSharingKind : std::uint8_t { kAirSprings, kWalkingBeam };
+struct LoadSharingParams {
+  LoadSharingKind kind = LoadSharingKind::kAirSprings;
+  int first_axle = 0;  ///< index from 0, front to rear
+  int axle_count = 2;
+  double pivot_x_m = 0;  ///< walking beam: the pivot on the frame (from the CG, forward +)
+};
+
 struct VehicleParams {
   std::string name;
   ChassisParams chassis{};
-  std::vector<AxleParams> axles;  ///< front to rear
+  std::vector<AxleParams> axles;                ///< front to rear
+  std::vector<LoadSharingParams> load_sharing;  ///< bogies; empty: every axle on its own springs
   SteeringParams steering{};
   DrivetrainParams drivetrain{};
   road::RoadParams road{};
