@@ -284,7 +284,7 @@ model::vehicle::LoadSharingParams read_load_sharing(StrictTable t, const Vehicle
   if (g.kind == model::vehicle::LoadSharingKind::kWalkingBeam) {
     if (g.axle_count != 2) throw t.error("axles", "a walking beam carries two axles");
     const double x1 = p.axles[static_cast<std::size_t>(g.first_axle)].position_x_m;
-    const double x2 = p.axles[static_cast<std::size_t>(g.first_axle + 1)].position_x_m;
+    const double x2 = p.axles[static_cast<std::size_t>(g.first_axle) + 1].position_x_m;
     g.pivot_x_m = t.number_in("pivot_x_m", x2 + 0.01, x1 - 0.01);
   }
   t.finish();

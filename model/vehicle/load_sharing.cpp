@@ -23,7 +23,7 @@ void check_group(const VehicleParams& p, const LoadSharingParams& g, const AxleS
   }
   if (g.kind == LoadSharingKind::kWalkingBeam) {
     const double x1 = p.axles[static_cast<std::size_t>(g.first_axle)].position_x_m;
-    const double x2 = p.axles[static_cast<std::size_t>(g.first_axle + 1)].position_x_m;
+    const double x2 = p.axles[static_cast<std::size_t>(g.first_axle) + 1].position_x_m;
     if (g.axle_count != 2 || !(g.pivot_x_m < x1 && g.pivot_x_m > x2))
       throw std::invalid_argument(what +
                                   "a walking beam carries two axles, its pivot between them");
@@ -39,23 +39,24 @@ AxleShares axle_shares(const VehicleParams& p) {
     check_group(p, g, s, "vehicle: load sharing group " + std::to_string(gi + 1) + ": ");
     double rate = 0, x = 0;
     for (int j = 0; j < g.axle_count; ++j) {
-      const AxleParams& a = p.axles[static_cast<std::size_t>(g.first_axle + j)];
-      AxleShare& sh = s[static_cast<std::size_t>(g.first_axle + j)];
+      const AxleParams& a =
+          p.axles[static_cast<std::size_t>(g.first_axle) + static_cast<std::size_t>(j)];
+      AxleShare& sh = s[static_cast<std::size_t>(g.first_axle) + static_cast<std::size_t>(j)];
       sh = {static_cast<int>(gi), g.first_axle, g.axle_count, 1.0 / g.axle_count, 0, 0};
       rate += a.spring_stiffness_npm;
     }
     if (g.kind == LoadSharingKind::kWalkingBeam) {  // the lever about the pivot
       const double x1 = p.axles[static_cast<std::size_t>(g.first_axle)].position_x_m;
-      const double x2 = p.axles[static_cast<std::size_t>(g.first_axle + 1)].position_x_m;
+      const double x2 = p.axles[static_cast<std::size_t>(g.first_axle) + 1].position_x_m;
       s[static_cast<std::size_t>(g.first_axle)].weight = (g.pivot_x_m - x2) / (x1 - x2);
-      s[static_cast<std::size_t>(g.first_axle + 1)].weight = (x1 - g.pivot_x_m) / (x1 - x2);
+      s[static_cast<std::size_t>(g.first_axle) + 1].weight = (x1 - g.pivot_x_m) / (x1 - x2);
     }
     for (int j = 0; j < g.axle_count; ++j) {
-      const auto k = static_cast<std::size_t>(g.first_axle + j);
+      const auto k = static_cast<std::size_t>(g.first_axle) + static_cast<std::size_t>(j);
       x += s[k].weight * p.axles[k].position_x_m;
     }
     for (int j = 0; j < g.axle_count; ++j) {
-      AxleShare& sh = s[static_cast<std::size_t>(g.first_axle + j)];
+      AxleShare& sh = s[static_cast<std::size_t>(g.first_axle) + static_cast<std::size_t>(j)];
       sh.group_rate_npm = rate;
       sh.group_x_m = x;
     }

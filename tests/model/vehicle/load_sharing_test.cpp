@@ -116,9 +116,10 @@ double tridem_spread(bool equalised) {
   s[Signal::kBrakePressureFront] = 8e5;
   s[Signal::kBrakePressureRear] = 8e5;
   for (int k = 0; k < 2000; ++k) EXPECT_EQ(c.step(s), StepStatus::kOk);
-  std::vector<double> loads;
+  std::vector<double> loads(3);
   for (int a = 0; a < 3; ++a)
-    loads.push_back(c.unit(1).wheel_load_n(2 * a) + c.unit(1).wheel_load_n(2 * a + 1));
+    loads[static_cast<std::size_t>(a)] =
+        c.unit(1).wheel_load_n(2 * a) + c.unit(1).wheel_load_n(2 * a + 1);
   const double mean = (loads[0] + loads[1] + loads[2]) / 3;
   double spread = 0;
   for (double l : loads) spread = std::max(spread, std::abs(l / mean - 1));
