@@ -41,6 +41,10 @@ struct WheelReport {
   double road_normal_y = 0;
   double road_normal_z = 1;
   double road_mu = 1;  ///< the friction scale the tire takes (1: its data as given)
+  /// The wheel's rigid axle (model/vehicle/rigid_axle.h): heave (up +) and roll (+ left wheel up)
+  /// against the body, alike for both its wheels; 0 on an independent axle.
+  double axle_heave_m = 0;
+  double axle_roll_rad = 0;
   /// 1: slip_x, slip_y mean a slip (the wheel moves at least slip_mask_speed_mps); 0: stand-still
   /// or creeping, the raw values are kept but are not slips an ECU should act on
   std::int8_t slip_valid = 1;

@@ -9,6 +9,7 @@
 #include "io/config/differential_config.h"
 #include "io/config/free_body_config.h"
 #include "model/report.h"
+#include "model/vehicle/rigid_axle.h"
 
 namespace rig::io::config {
 namespace {
@@ -177,18 +178,75 @@ void read_steering_axis(StrictTable& t, AxleParams& a) {
   }
 }
 
+/// [axle.rigid] of a `kind = "rigid"` axle (model/vehicle/rigid_axle.h): the axle body, its
+/// springs' and dampers' tracks, bar, roll steer and the guidance that sets its roll centre.
+void read_rigid_axle(StrictTable t, AxleParams& a) {
+  model::vehicle::RigidAxleParams& r = a.rigid;
+  r.mass_kg = t.number_in("mass_kg", 2, 10000);
+  r.roll_inertia_kgm2 = t.number_in("roll_inertia_kgm2", 0.01, 1e5);
+  r.spring_track_m = t.number_in("spring_track_m", 0.1, 4);
+  r.damper_track_m = t.number_in("damper_track_m", r.spring_track_m, 0.1, 4);
+  r.anti_roll_stiffness_nmprad = t.number_in("anti_roll_stiffness_nmprad", 0, 0, 1e9);
+  r.roll_steer = t.number_in("roll_steer", 0, -1, 1);
+  const std::string g = t.choice("guidance", "", {"panhard", "four_link", "leaf"});
+  const auto height = [&t](std::string_view key) { return t.number_in(key, 0, 3); };
+  if (g == "panhard") {
+    r.guidance = model::vehicle::AxleGuidance::kPanhard;
+    const double axle_end = height("panhard_axle_height_m");
+    r.roll_centre_height_m = model::vehicle::panhard_roll_centre_m(
+        axle_end, t.number_in("panhard_frame_height_m", axle_end, 0, 3));
+  } else if (g == "four_link") {
+    r.guidance = model::vehicle::AxleGuidance::kFourLink;
+    const double xu = t.number_in("upper_links_meet_x_m", -50, 50);
+    const double hu = height("upper_links_height_m");
+    const double xl = t.number_in("lower_links_meet_x_m", -50, 50);
+    const double hl = height("lower_links_height_m");
+    if (std::abs(xl - xu) < 0.05)
+      throw t.error("lower_links_meet_x_m",
+                    "the upper and lower links must meet at different x (>= 0.05 m apart): the "
+                    "roll axis runs through both points");
+    r.roll_centre_height_m = model::vehicle::four_link_roll_centre_m(xu, hu, xl, hl);
+    if (!(r.roll_centre_height_m >= 0 && r.roll_centre_height_m <= 3))
+      throw t.error("lower_links_meet_x_m",
+                    "gives a roll centre " + std::to_string(r.roll_centre_height_m) +
+                        " m above the ground at the axle; it must lie in [0, 3] m");
+  } else {
+    r.guidance = model::vehicle::AxleGuidance::kLeaf;
+    const double front = height("leaf_front_eye_height_m");
+    r.roll_centre_height_m =
+        model::vehicle::leaf_roll_centre_m(front, height("leaf_rear_eye_height_m"));
+  }
+  t.finish();
+}
+
 AxleParams read_axle(StrictTable t, const std::map<std::string, TireParams>& tires) {
   AxleParams a;
   a.position_x_m = t.number_in("position_x_m", -20, 20);
   a.track_m = t.number_in("track_m", 0.5, 4);
-  a.unsprung_mass_kg = t.number_in("unsprung_mass_kg", 1, 5000);
+  const bool rigid = t.choice("kind", "independent", {"independent", "rigid"}) == "rigid";
+  if (rigid) {
+    // the axle body's mass and bar are [axle.rigid]'s: the per-wheel keys would contradict them
+    for (const char* key : {"unsprung_mass_kg", "anti_roll_stiffness_npm"}) {
+      if (t.has(key))
+        throw t.error(key,
+                      "a rigid axle takes its mass and bar from [axle.rigid] (mass_kg, "
+                      "anti_roll_stiffness_nmprad)");
+    }
+    a.kind = model::vehicle::AxleKind::kRigid;
+    read_rigid_axle(t.table("rigid"), a);
+    a.unsprung_mass_kg = 0.5 * a.rigid.mass_kg;  // each wheel's point mass (rigid_axle.h)
+    a.anti_roll_stiffness_npm = 0;
+  } else {
+    if (t.has("rigid")) throw t.error("rigid", "[axle.rigid] needs kind = \"rigid\"");
+    a.unsprung_mass_kg = t.number_in("unsprung_mass_kg", 1, 5000);
+  }
   a.spring_stiffness_npm = t.number_in("spring_stiffness_npm", 1e2, 1e8);
   a.damper_bump_nspm = t.number_in("damper_bump_nspm", 0, 1e7);
   a.damper_rebound_nspm = t.number_in("damper_rebound_nspm", 0, 1e7);
   a.bump_stop_travel_m = t.number_in("bump_stop_travel_m", 0.001, 1);
   a.rebound_stop_travel_m = t.number_in("rebound_stop_travel_m", 0.001, 1);
   a.stop_stiffness_npm = t.number_in("stop_stiffness_npm", 0, 1e9);
-  a.anti_roll_stiffness_npm = t.number_in("anti_roll_stiffness_npm", 0, 1e8);
+  if (!rigid) a.anti_roll_stiffness_npm = t.number_in("anti_roll_stiffness_npm", 0, 1e8);
   a.steered = t.boolean("steered", false);
   a.driven = t.boolean("driven", false);
   a.brake_circuit = t.choice("brake_circuit", "front", {"front", "rear"}) == "front" ? 0 : 1;
@@ -202,6 +260,37 @@ AxleParams read_axle(StrictTable t, const std::map<std::string, TireParams>& tir
   read_steering_axis(t, a);
   t.finish();
   return a;
+}
+
+/// [[load_sharing]]: a bogie of adjacent axles sharing its load (model/vehicle/load_sharing.h).
+model::vehicle::LoadSharingParams read_load_sharing(StrictTable t, const VehicleParams& p) {
+  model::vehicle::LoadSharingParams g;
+  const std::string kind = t.choice("kind", "", {"air_springs", "walking_beam"});
+  g.kind = kind == "walking_beam" ? model::vehicle::LoadSharingKind::kWalkingBeam
+                                  : model::vehicle::LoadSharingKind::kAirSprings;
+  const std::vector<long long> axles = t.integers("axles", model::kMaxWheelsPerUnit / 2);
+  const auto n = static_cast<long long>(p.axles.size());
+  for (std::size_t i = 0; i < axles.size(); ++i) {
+    if (axles[i] < 1 || axles[i] > n || (i > 0 && axles[i] != axles[i - 1] + 1))
+      throw t.error("axles", "the bogie's axles: adjacent axle numbers from 1 to " +
+                                 std::to_string(n) + ", front to rear (e.g. [2, 3, 4])");
+  }
+  if (axles.size() < 2) throw t.error("axles", "a bogie shares its load among 2 or more axles");
+  g.first_axle = static_cast<int>(axles.front() - 1);
+  g.axle_count = static_cast<int>(axles.size());
+  for (long long a : axles) {
+    if (p.axles[static_cast<std::size_t>(a - 1)].kind != model::vehicle::AxleKind::kIndependent)
+      throw t.error("axles", "axle " + std::to_string(a) +
+                                 " is rigid: load sharing acts on independent axles only");
+  }
+  if (g.kind == model::vehicle::LoadSharingKind::kWalkingBeam) {
+    if (g.axle_count != 2) throw t.error("axles", "a walking beam carries two axles");
+    const double x1 = p.axles[static_cast<std::size_t>(g.first_axle)].position_x_m;
+    const double x2 = p.axles[static_cast<std::size_t>(g.first_axle) + 1].position_x_m;
+    g.pivot_x_m = t.number_in("pivot_x_m", x2 + 0.01, x1 - 0.01);
+  }
+  t.finish();
+  return g;
 }
 
 /// The built-in EPS's active return (steering/README.md "active return"); off without its keys.
@@ -409,6 +498,22 @@ void read_chassis(StrictTable c, model::vehicle::ChassisParams& chassis) {
 
 }  // namespace
 
+/// Every [[load_sharing]] bogie; an axle in two of them is an error.
+void read_bogies(StrictTable& t, VehicleParams& p) {
+  const std::vector<StrictTable> bogies =
+      t.has("load_sharing") ? t.tables("load_sharing", model::kMaxWheelsPerUnit / 4)
+                            : std::vector<StrictTable>{};
+  for (const StrictTable& g : bogies) {
+    p.load_sharing.push_back(read_load_sharing(g, p));
+    for (const auto& other : p.load_sharing) {
+      const auto& last = p.load_sharing.back();
+      if (&other != &last && other.first_axle < last.first_axle + last.axle_count &&
+          last.first_axle < other.first_axle + other.axle_count)
+        throw t.error("load_sharing", "an axle is in two [[load_sharing]] bogies");
+    }
+  }
+}
+
 VehicleParams load_vehicle_file(const std::filesystem::path& file,
                                 const std::vector<Override>& patch) {
   toml::table root = load_toml_file(file);
@@ -436,6 +541,7 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file,
     throw t.error("axle", "needs 1 to 6 [[axle]] tables");
   }
   check_axle_order(axle_tables, p.axles);
+  read_bogies(t, p);
   // A trailer (no steered, no driven axle) may leave out [steering] and [drivetrain].
   bool any_steered = false, any_driven = false;
   for (const auto& a : p.axles) {

@@ -92,6 +92,9 @@ struct VehicleStateFields {
       {"wheel_road_normal_z", "1", member<&W::road_normal_z>, &S::wheel_road_normal_z,
        "road_normal_z"},
       {"wheel_road_mu", "1", member<&W::road_mu>, &S::wheel_road_mu, "road_mu"},
+      {"wheel_axle_heave_m", "m", member<&W::axle_heave_m>, &S::wheel_axle_heave_m, "axle_heave_m"},
+      {"wheel_axle_roll_rad", "rad", member<&W::axle_roll_rad>, &S::wheel_axle_roll_rad,
+       "axle_roll_rad"},
   };
 
   /// Per wheel, flags: 1 valid, 0 not.

@@ -139,6 +139,7 @@ SuspensionKinematics::SuspensionKinematics(const VehicleParams& p) {
     for (std::size_t w = wheels_.size() - 2; w < wheels_.size(); ++w) {
       const WheelKinematics& wk = wheels_[w];
       used_[w] = {nonzero(wk.x()), nonzero(wk.y()), nonzero(wk.alpha()), nonzero(wk.gamma())};
+      if (a.kind == AxleKind::kRigid) rigid_[w] = {true, 0.5 * a.track_m, a.rigid.roll_steer};
     }
   }
 }
@@ -153,6 +154,10 @@ void SuspensionKinematics::update(const VehicleState& state,
   for (int i = 0; i < work.wheel_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
     WheelWork& w = work.wheels[k];
+    if (rigid_[k].rigid) {
+      update_rigid_wheel(i, state, w);
+      continue;
+    }
     const double s = state.framework_y(6 + i);
     const double rack = state.rack_at_wheel_m[k];
     w.hub_travel_m = s;
@@ -182,6 +187,28 @@ void SuspensionKinematics::update(const VehicleState& state,
     w.steer_kinematic_rad = steer;
     set_wheel_orientation(w, steer, camber);
   }
+}
+
+void SuspensionKinematics::update_rigid_wheel(int i, const VehicleState& state,
+                                              WheelWork& w) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  const Rigid& r = rigid_[k];
+  const Eigen::Index h = 6 + 2 * (i / 2);
+  const double roll = state.framework_y(h + 1);
+  // heave +- (track/2) roll: rigid_hub_travel_m
+  const double s = state.framework_y(h) + (i % 2 == 0 ? r.half_track_m : -r.half_track_m) * roll;
+  const double rack = state.rack_at_wheel_m[k];
+  w.hub_travel_m = s;
+  w.steer_at_rack_m = rack;
+  double steer = r.roll_steer * roll;
+  if (used_[k].gamma) {
+    const kinematics::TableValue g = wheels_[k].gamma().evaluate(
+        kinematics::table_weights(wheels_[k].grid(), wheels_[k].method(), s, rack));
+    steer += g.value;
+    w.steer_d_du = g.d_du;
+  }
+  w.steer_kinematic_rad = steer;
+  set_wheel_orientation(w, steer, roll);  // camber = the axle's roll
 }
 
 }  // namespace rig::model::vehicle

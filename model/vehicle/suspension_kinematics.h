@@ -52,6 +52,15 @@ class SuspensionKinematics {
     bool x = false, y = false, alpha = false, gamma = false;
   };
   std::array<Used, kMaxWheels> used_{};
+  /// A wheel of a rigid axle (rigid_axle.h): its hub travel comes from the axle's heave and roll,
+  /// its camber is the axle's roll and its steer gets roll steer; the tables give gamma only.
+  struct Rigid {
+    bool rigid = false;
+    double half_track_m = 0;
+    double roll_steer = 0;
+  };
+  std::array<Rigid, kMaxWheels> rigid_{};
+  void update_rigid_wheel(int i, const VehicleState& state, WheelWork& w) const noexcept;
 };
 
 }  // namespace rig::model::vehicle

@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include <Eigen/LU>
-
 #include "model/tire/tmeasy_tire.h"
 #include "model/tire/vertical_tire_force.h"
 #include "model/vehicle/free_body/free_bodies.h"
@@ -17,49 +15,27 @@ VehicleFramework::VehicleFramework(const VehicleParams& p, VehicleState& state,
       work_(work),
       road_(p.road),
       wheel_count_(2 * static_cast<int>(p.axles.size())),
-      n_(6 + 2 * static_cast<Eigen::Index>(p.axles.size())) {
+      n_(6 + 2 * static_cast<Eigen::Index>(p.axles.size())),
+      shares_(axle_shares(p)) {
   const double g = p.road.gravity_mps2;
   const auto& c = p.chassis;
   inertia_ << c.inertia_kgm2[0], 0, -c.inertia_xz_kgm2, 0, c.inertia_kgm2[1], 0, -c.inertia_xz_kgm2,
       0, c.inertia_kgm2[2];
   total_mass_kg_ = c.mass_kg;
   // Static loads of the sprung mass on the springs (heave + pitch of a rigid body on linear
-  // springs; the lever rule for two axles): the springs are preloaded so that the design
-  // position is at zero hub travel.
-  // the free bodies' weights rest on the chassis (their mounts): the springs carry them too
-  double body_weight = 0, body_moment = 0;
-  for (const FreeBodyParams& b : p.free_bodies) {
-    body_weight += b.mass_kg * g;
-    body_moment += b.mass_kg * g * b.position_m[0];
-  }
-  double sk = 0, skx = 0, skxx = 0;
-  for (const auto& a : p.axles) {
-    sk += 2 * a.spring_stiffness_npm;
-    skx += 2 * a.spring_stiffness_npm * a.position_x_m;
-    skxx += 2 * a.spring_stiffness_npm * a.position_x_m * a.position_x_m;
-  }
-  Eigen::Vector2d heave_pitch;
-  if (!c.supported) {
-    Eigen::Matrix2d a2;
-    a2 << sk, -skx, skx, -skxx;
-    heave_pitch = a2.lu().solve(Eigen::Vector2d(c.mass_kg * g + c.payload_n + body_weight,
-                                                c.payload_n * c.payload_x_m + body_moment));
-  } else {
-    // held at design height at x_s (heave = x_s pitch) by a support force F_s (up): unknowns
-    // heave, pitch, F_s from the force and moment balance (a 1-axle trailer is determinate)
-    Eigen::Matrix3d a3;
-    a3 << sk, -skx, 1, skx, -skxx, c.support_x_m, 1, -c.support_x_m, 0;
-    const Eigen::Vector3d x = a3.lu().solve(Eigen::Vector3d(
-        c.mass_kg * g + c.payload_n + body_weight, c.payload_n * c.payload_x_m + body_moment, 0));
-    heave_pitch = x.head<2>();
-    support_load_n_ = x(2);
-  }
+  // springs; the lever rule for two axles; a load-sharing bogie one spring): the springs are
+  // preloaded so that the design position is at zero hub travel.
+  const Eigen::Vector2d heave_pitch = static_heave_pitch(p, shares_, support_load_n_);
   for (int i = 0; i < wheel_count_; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const auto& a = p.axles[k / 2];
     axle_of_[k] = i / 2;
     total_mass_kg_ += a.unsprung_mass_kg;
-    preload_[k] = a.spring_stiffness_npm * (heave_pitch(0) - a.position_x_m * heave_pitch(1));
+    const AxleShare& sh = shares_[k / 2];
+    preload_[k] =
+        sh.group < 0
+            ? a.spring_stiffness_npm * (heave_pitch(0) - a.position_x_m * heave_pitch(1))
+            : sh.weight * sh.group_rate_npm * (heave_pitch(0) - sh.group_x_m * heave_pitch(1));
     const double tire_load = preload_[k] + a.unsprung_mass_kg * g;
     const double centre_height =
         a.tire.tmeasy.radius_unloaded_m - tire_load / a.tire.tmeasy.vertical_stiffness_npm;
@@ -68,6 +44,7 @@ VehicleFramework::VehicleFramework(const VehicleParams& p, VehicleState& state,
     // Rill 2011 sec. 3.2: probes at 0.1 r_0 fore and aft, 0.3 B left and right
     probes_[k] = {0.1 * a.tire.tmeasy.radius_unloaded_m, 0.3 * a.tire.tmeasy.bore.contact_width_m};
   }
+  setup_rigid_axles();
 }
 
 Vec3 VehicleFramework::wheel_centre(int i, double s) const noexcept {
@@ -94,6 +71,10 @@ void VehicleFramework::mass_matrix(const Vector& y, Matrix& m) const noexcept {
   m.block<3, 3>(3, 3) = inertia_;
   for (int i = 0; i < wheel_count_; ++i) {
     const auto k = static_cast<std::size_t>(i);
+    if (rigid_[k / 2]) {
+      if (i % 2 == 0) rigid_mass_matrix(i / 2, y, m);
+      continue;
+    }
     const double mw = p_.axles[k / 2].unsprung_mass_kg;
     const Vec3 r = wheel_centre(i, y(6 + i));
     const Vec3 es = hub_axis(i);
@@ -124,6 +105,7 @@ WheelForces VehicleFramework::wheel_forces(const Vector& y, const Vector& z, int
 WheelContact VehicleFramework::contact(const Mat3& rot, const Vector& y, const Vector& z,
                                        int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
+  if (rigid_[k / 2]) return rigid_contact(rot, y, z, i);
   const double r0 = p_.axles[k / 2].tire.tmeasy.radius_unloaded_m;
   if (road_.is_plane()) {
     return wheel_contact(road_, rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3),
@@ -139,7 +121,10 @@ LocalRoadPlane VehicleFramework::road_plane(const Mat3& rot, const Vector& y, co
                                             int i, double lookahead_s,
                                             ProbeHints& hints) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  const Vec3 r = wheel_centre(i, y(6 + i));
+  const Vec3 r = rigid_[k / 2] ? rigid_wheel_point(rigid_geometry_[k / 2], i % 2,
+                                                   y(6 + 2 * (i / 2)), y(7 + 2 * (i / 2)))
+                                     .centre_m
+                               : wheel_centre(i, y(6 + i));
   const Vec3 velocity = rot * (z.segment<3>(0) + z.segment<3>(3).cross(r));  // road frame
   const Vec3 centre = y.head<3>() + rot * r + lookahead_s * velocity;
   const Vec3 spin = rot * work_.wheels[k].spin_axis;
@@ -175,10 +160,20 @@ WheelForces VehicleFramework::wheel_forces(const WheelContact& c, const Vector& 
     out.force_x_n = f.long_force_n;
     out.force_y_n = f.lat_force_n;
   }
+  if (rigid_[k / 2]) {  // the axle's spring on this side, its travel, heave and roll
+    const Eigen::Index h = 6 + 2 * (i / 2);
+    out.suspension_n = axle_suspension_forces(i / 2, y, z).spring_n[k % 2];
+    out.rigid_axle = true;
+    out.axle_heave_m = y(h);
+    out.axle_roll_rad = y(h + 1);
+    out.hub_travel_m = rigid_hub_travel_m(a, i % 2, y(h), y(h + 1));
+    return out;
+  }
   // Suspension: preloaded spring, bump/rebound damper, stops, anti-roll bar (wheel rates).
   const double s = y(6 + i), sd = z(6 + i), s_other = y(6 + (i ^ 1));
-  double fs = preload_[k] + a.spring_stiffness_npm * s +
-              (sd > 0 ? a.damper_bump_nspm : a.damper_rebound_nspm) * sd;
+  const double spring =
+      shares_[k / 2].group < 0 ? a.spring_stiffness_npm * s : shared_spring_n(i, y);
+  double fs = preload_[k] + spring + (sd > 0 ? a.damper_bump_nspm : a.damper_rebound_nspm) * sd;
   if (s > a.bump_stop_travel_m) fs += a.stop_stiffness_npm * (s - a.bump_stop_travel_m);
   if (s < -a.rebound_stop_travel_m) fs += a.stop_stiffness_npm * (s + a.rebound_stop_travel_m);
   fs += a.anti_roll_stiffness_npm * (s - s_other);
@@ -198,6 +193,10 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
   Vec3 tr = -w.cross(inertia_ * w);
   for (int i = 0; i < wheel_count_; ++i) {
     const auto k = static_cast<std::size_t>(i);
+    if (rigid_[k / 2]) {
+      rigid_wheel_applied(i, rot, y, z, g, ft, tr, q);
+      continue;
+    }
     const double mw = p_.axles[k / 2].unsprung_mass_kg;
     const double sd = z(6 + i);
     const Vec3 r = wheel_centre(i, y(6 + i));
@@ -216,6 +215,12 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
           (work_.wheels[k].shaft_torque_nm + work_.wheels[k].brake_torque_nm) * c.spin_axis;
     q(6 + i) = es.dot(f) - wf.suspension_n;  // J_v hub column e_s
   }
+  if (any_rigid_) {
+    for (int a = 0; a < wheel_count_ / 2; ++a) {
+      if (rigid_[static_cast<std::size_t>(a)])
+        q.segment<2>(6 + 2 * a) += axle_suspension_forces(a, y, z).q;
+    }
+  }
   q.segment<3>(0) = ft;
   q.segment<3>(3) = tr;
   if (free_bodies_) free_bodies_->add_chassis_load(rigid_pose(y, z), q.head<6>());
@@ -227,7 +232,12 @@ void VehicleFramework::suspension_jacobians(int i, const Vector& y, const Vector
   const AxleParams& ax = p_.axles[static_cast<std::size_t>(i / 2)];
   const Eigen::Index h = 6 + i;
   const double s = y(h);
-  double stiff = ax.spring_stiffness_npm + ax.anti_roll_stiffness_npm;
+  const AxleShare& sh = shares_[static_cast<std::size_t>(i / 2)];
+  // in a load-sharing group the diagonal w_i^2 k_g; the other axles' terms w_i w_j k_g couple
+  // leaves of the arrowhead and stay lagged (soft: the group's heave rate is the springs')
+  double stiff =
+      (sh.group < 0 ? ax.spring_stiffness_npm : sh.weight * sh.weight * sh.group_rate_npm) +
+      ax.anti_roll_stiffness_npm;
   if (s > ax.bump_stop_travel_m || s < -ax.rebound_stop_travel_m) stiff += ax.stop_stiffness_npm;
   dq_dy(h, h) -= stiff;
   dq_dy(h, 6 + (i ^ 1)) += ax.anti_roll_stiffness_npm;
@@ -288,6 +298,11 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
   const Mat3 rot = body_to_road(y(3), y(4), y(5));
   const Mat3 e_inv = body_rates_from_euler_rates(y(4), y(5));  // K_BB angle part
   for (int i = 0; i < wheel_count_; ++i) {
+    if (rigid_[static_cast<std::size_t>(i / 2)]) {
+      if (i % 2 == 0) rigid_suspension_jacobians(i / 2, y, z, dq_dy, dq_dz);
+      rigid_tire_jacobians(i, rot, e_inv, y, z, dq_dy, dq_dz);
+      continue;
+    }
     suspension_jacobians(i, y, z, dq_dy, dq_dz);
     tire_jacobians(i, rot, e_inv, y, z, dq_dy, dq_dz);
   }
@@ -315,6 +330,14 @@ tire::TireKinematics VehicleFramework::tire_kinematics(const WheelContact& c,
   return {
       c.vx_mps, c.vy_mps, state_.spin_radps[k],
       tire::dynamic_rolling_radius(p_.axles[k / 2].tire.tmeasy.radius_unloaded_m, c.penetration_m)};
+}
+
+double VehicleFramework::shared_spring_n(int i, const Vector& y) const noexcept {
+  const AxleShare& sh = shares_[static_cast<std::size_t>(i / 2)];
+  double travel = 0;  // the group's weighted travel on this side
+  for (int j = sh.first_axle; j < sh.first_axle + sh.axle_count; ++j)
+    travel += shares_[static_cast<std::size_t>(j)].weight * y(6 + 2 * j + i % 2);
+  return sh.weight * sh.group_rate_npm * travel;
 }
 
 }  // namespace rig::model::vehicle

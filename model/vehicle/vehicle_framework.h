@@ -7,12 +7,15 @@
 /// tangent of the kinematic tables of eq. (29) (e_z when the hub moves along body z). Suspension
 /// forces act on the hub coordinates only; tire forces at the contact points with J_P. K_V =
 /// diag(K_BB, I) with K_BB inverted analytically. Speeds are ordered body first, then axle by axle,
-/// so that M_VI has the zero blocks of eqs. (30-31) (ArrowheadFactorization).
+/// so that M_VI has the zero blocks of eqs. (30-31) (ArrowheadFactorization). A rigid axle
+/// (rigid_axle.h) takes its two slots as heave and roll of the axle body: the same 2 x 2 leaf.
 
 #include <array>
 
 #include "model/road/road.h"
 #include "model/solver/mechanical_block.h"
+#include "model/vehicle/load_sharing.h"
+#include "model/vehicle/rigid_axle.h"
 #include "model/vehicle/vehicle_state.h"
 #include "model/vehicle/vehicle_workspace.h"
 #include "model/vehicle/wheel_contact.h"
@@ -84,6 +87,22 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   /// d(wheel centre)/ds = (dx/dz, dy/dz, 1): the hub-travel column of J_v and J_P.
   [[nodiscard]] Vec3 hub_axis(int i) const noexcept;
 
+  /// Rigid axles (rigid_axle.h): is axle a one, its geometry, and the seam for its suspension
+  /// elements (by default springs, dampers, stops and bar: SpringDamperAxleSuspension). The
+  /// element must outlive the framework; set before the first step.
+  [[nodiscard]] bool rigid(int axle) const noexcept {
+    return rigid_[static_cast<std::size_t>(axle)];
+  }
+  [[nodiscard]] const RigidAxleGeometry& rigid_geometry(int axle) const noexcept {
+    return rigid_geometry_[static_cast<std::size_t>(axle)];
+  }
+  void set_axle_suspension(int axle, const AxleSuspension& element) noexcept {
+    suspension_[static_cast<std::size_t>(axle)] = &element;
+  }
+  /// The suspension forces of rigid axle a at (y, z).
+  [[nodiscard]] AxleSuspensionForces axle_suspension_forces(int axle, const Vector& y,
+                                                            const Vector& z) const noexcept;
+
  private:
   /// What the tire of wheel i sees at contact c (spin of the state, r_D from the penetration).
   [[nodiscard]] tire::TireKinematics tire_kinematics(const WheelContact& c, int i) const noexcept;
@@ -91,6 +110,19 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
                             Matrix& dq_dz) const noexcept;
   void tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv, const Vector& y, const Vector& z,
                       Matrix& dq_dy, Matrix& dq_dz) const noexcept;
+  // rigid axles (vehicle_framework_rigid.cpp)
+  void setup_rigid_axles();
+  [[nodiscard]] WheelContact rigid_contact(const Mat3& rot, const Vector& y, const Vector& z,
+                                           int i) const noexcept;
+  void rigid_mass_matrix(int axle, const Vector& y, Matrix& m) const noexcept;
+  /// Wheel i's forces (inertia, gravity, tire, torques) on the body (force, moment about the
+  /// CG: added to ft, tr) and on its axle's heave and roll (added to q).
+  void rigid_wheel_applied(int i, const Mat3& rot, const Vector& y, const Vector& z, const Vec3& g,
+                           Vec3& ft, Vec3& tr, Vector& q) const noexcept;
+  void rigid_tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv, const Vector& y,
+                            const Vector& z, Matrix& dq_dy, Matrix& dq_dz) const noexcept;
+  void rigid_suspension_jacobians(int axle, const Vector& y, const Vector& z, Matrix& dq_dy,
+                                  Matrix& dq_dz) const noexcept;
 
   void free_body_jacobians(const Vector& y, const Vector& z, const Mat3& rot, const Mat3& e,
                            Matrix& dq_dy, Matrix& dq_dz) const noexcept;
@@ -106,6 +138,14 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   std::array<Vec3, kMaxWheels> mount_{};
   std::array<double, kMaxWheels> preload_{};
   std::array<ContactProbes, kMaxWheels> probes_{};  ///< dx = 0.1 r_0, dy = 0.3 B per wheel
+  std::array<bool, kMaxAxles> rigid_{};
+  AxleShares shares_{};  ///< load-sharing groups (load_sharing.h)
+  /// The spring force of wheel i's axle in its load-sharing group: w_i k_g sum_j w_j s_j.
+  [[nodiscard]] double shared_spring_n(int i, const Vector& y) const noexcept;
+  std::array<RigidAxleGeometry, kMaxAxles> rigid_geometry_{};
+  std::array<SpringDamperAxleSuspension, kMaxAxles> default_suspension_{};
+  std::array<const AxleSuspension*, kMaxAxles> suspension_{};
+  bool any_rigid_ = false;
   Mat3 inertia_;
   double total_mass_kg_ = 0;
   double support_load_n_ = 0;

@@ -4,6 +4,7 @@
 /// filled by io/config from TOML. No behaviour here.
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,33 @@ struct AxleKinematicsParams {
   bool bicubic = true;  ///< Catmull-Rom bicubic (C1) or bilinear interpolation
 };
 
+/// How an axle's two wheels move against the body: each on its own hub travel (independent
+/// suspension, eq. 29) or together on one rigid axle body (rigid_axle.h).
+enum class AxleKind : std::uint8_t { kIndependent, kRigid };
+/// What guides a rigid axle laterally, and so sets its roll centre (rigid_axle.h).
+enum class AxleGuidance : std::uint8_t { kPanhard, kFourLink, kLeaf };
+
+/// A rigid (solid, beam) axle: one body carrying both wheels, with heave and roll against the
+/// body (model/vehicle/rigid_axle.h). `[axle.rigid]` of a `[[axle]] kind = "rigid"`.
+struct RigidAxleParams {
+  double mass_kg = 700;                   ///< the axle with its wheels, hubs and brakes
+  double roll_inertia_kgm2 = 300;         ///< about its centre, longitudinal axis
+  double spring_track_m = 1.0;            ///< lateral spacing of the two springs (and stops)
+  double damper_track_m = 1.0;            ///< lateral spacing of the two dampers
+  double anti_roll_stiffness_nmprad = 0;  ///< the bar, on the axle's roll against the body
+  /// Roll steer: the axle's steer (gamma of both wheels, + front to the left) per axle roll
+  /// against the body (+ left wheel up) [rad/rad].
+  double roll_steer = 0;
+  AxleGuidance guidance = AxleGuidance::kPanhard;
+  /// The roll centre above the ground at design height, derived from the guidance's geometry
+  /// by io/config (rigid_axle.h: roll_centre_height_m); the axle rolls about it.
+  double roll_centre_height_m = 0.5;
+};
+
 /// One axle: two wheels at +-track/2, hub travel guided by the kinematics of eq. (29).
 struct AxleParams {
+  AxleKind kind = AxleKind::kIndependent;
+  RigidAxleParams rigid{};  ///< kind == kRigid only
   double position_x_m = 0;  ///< wheel centre x relative to the sprung-mass CG (forward +)
   double track_m = 1.55;
   double unsprung_mass_kg = 40;         ///< per wheel
@@ -265,10 +291,22 @@ struct FaultLimits {
   double rate_radps = 10;  ///< angular rate magnitude (body axes)
 };
 
+/// A load-sharing bogie (model/vehicle/load_sharing.h): adjacent independent axles whose
+/// springs share the load by a fixed split - a walking beam (two axles, the beam pivoted at
+/// pivot_x_m) or connected air springs (equal shares). `[[load_sharing]]` of the vehicle file.
+enum class LoadSharingKind : std::uint8_t { kAirSprings, kWalkingBeam };
+struct LoadSharingParams {
+  LoadSharingKind kind = LoadSharingKind::kAirSprings;
+  int first_axle = 0;  ///< index from 0, front to rear
+  int axle_count = 2;
+  double pivot_x_m = 0;  ///< walking beam: the pivot on the frame (from the CG, forward +)
+};
+
 struct VehicleParams {
   std::string name;
   ChassisParams chassis{};
-  std::vector<AxleParams> axles;  ///< front to rear
+  std::vector<AxleParams> axles;                ///< front to rear
+  std::vector<LoadSharingParams> load_sharing;  ///< bogies; empty: every axle on its own springs
   SteeringParams steering{};
   DrivetrainParams drivetrain{};
   road::RoadParams road{};

@@ -110,7 +110,7 @@ void fill_wheel(const VehicleState& state, const VehicleInputs& in, const Vehicl
   r.load_n = w.out.load_n;
   r.deflection_x_m = state.tire_deflection_m[k](0);
   r.deflection_y_m = state.tire_deflection_m[k](1);
-  r.hub_travel_m = state.framework_y(6 + i);
+  r.hub_travel_m = w.out.rigid_axle ? w.out.hub_travel_m : state.framework_y(6 + i);
   r.steer_angle_rad = w.steer_rad;
   r.brake_torque_nm = w.brake_torque_nm;
   r.brake_pressure_pa = in.brake_pressure_pa[k];
@@ -124,6 +124,8 @@ void fill_wheel(const VehicleState& state, const VehicleInputs& in, const Vehicl
   r.road_normal_y = w.road.normal.y();
   r.road_normal_z = w.road.normal.z();
   r.road_mu = w.road_friction;
+  r.axle_heave_m = w.out.axle_heave_m;
+  r.axle_roll_rad = w.out.axle_roll_rad;
 }
 
 }  // namespace

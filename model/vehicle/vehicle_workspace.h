@@ -21,7 +21,12 @@ struct WheelForces {
   double force_y_n = 0;
   double slip_x = 0;
   double slip_y = 0;
-  double suspension_n = 0;      ///< pushes the wheel down (compression +)
+  double suspension_n = 0;  ///< pushes the wheel down (compression +)
+  // a wheel of a rigid axle (rigid_axle.h): its hub travel and the axle's heave and roll
+  bool rigid_axle = false;
+  double hub_travel_m = 0;
+  double axle_heave_m = 0;
+  double axle_roll_rad = 0;
   tire::TireKinematics tire{};  ///< what the tire saw: v_x, v_y, omega, r_D
 };
 

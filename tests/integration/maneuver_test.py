@@ -321,6 +321,24 @@ def iso4138_understeer(rows, plateau_s, steady_s, wheelbase, ratio, ay_max=4.0, 
     return lsq_slope(xs, ys), len(xs)
 
 
+def case_step_steer_truck_rigid(s, rows):
+    # issue 17: the truck on rigid axles; tests/model/vehicle/rigid_axle_test.cpp: a_y ~1.5 m/s^2
+    end = at(rows, 6.0)
+    ay_end = end["unit0_ay_mps2"]
+    check(1.0 < ay_end < 2.5, f"steady a_y {ay_end:.3f} m/s^2")
+    late = [r["unit0_wz_radps"] for r in rows if r["sim_time_s"] >= 4.5]
+    check(max(late) - min(late) < 0.02 * abs(end["unit0_wz_radps"]),
+          "yaw rate settled over 4.5-6 s (no oscillation at h = 1 ms)")
+    check(end["unit0_roll_rad"] > 0.003, f"body roll {end['unit0_roll_rad']:.4f} rad to the outside")
+    # each rigid axle's heave and roll, alike on both its wheels; the hub travel follows from them
+    roll = end["wheel2_axle_roll_rad"]
+    check(roll < -0.002 and end["wheel3_axle_roll_rad"] == roll,
+          f"drive axle 1 rolls against the body: {roll:.5f} rad on both wheels")
+    hub = end["wheel2_axle_heave_m"] + 0.5 * 1.85 * roll
+    check(abs(end["wheel2_hub_travel_m"] - hub) < 1e-12,
+          f"hub travel = heave + track/2 roll ({end['wheel2_hub_travel_m']:.6f} m)")
+
+
 def case_circle_iso4138(s, rows):
     k = kpis_of(s)["understeer_gradient_radpmps2"]
     st = vehicle_file(config_path(NAME))["steering"]
