@@ -197,23 +197,18 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
       rigid_wheel_applied(i, rot, y, z, g, ft, tr, q);
       continue;
     }
-    const double mw = p_.axles[k / 2].unsprung_mass_kg;
     const double sd = z(6 + i);
     const Vec3 r = wheel_centre(i, y(6 + i));
     const Vec3 es = hub_axis(i);
     const Vec3 a0 = w.cross(v) + w.cross(w.cross(r)) + 2.0 * w.cross(es * sd);
-    const Vec3 fw = mw * (g - a0);
-    const WheelContact c = contact(rot, y, z, i);
-    const WheelForces wf = wheel_forces(c, y, z, i);
-    // tire force acting at the wheel centre (the spin DOF carries the moment r F_x) plus the
-    // reactions of the drive and brake torques on the chassis
-    const Vec3 f = fw + wf.force_x_n * c.ex + wf.force_y_n * c.ey + wf.load_n * c.normal;
+    const CarrierLoad l = carrier_load(i, rot, y, z, g, r, a0);
+    const Vec3& f = l.force_n;
+    const Vec3& s = l.contact.spin_axis;
     ft += f;
-    // moment of the contact force about the wheel centre, except its spin-axis part
-    const Vec3 m_contact = (c.lever_m - r).cross(f - fw);
-    tr += r.cross(f) + m_contact - m_contact.dot(c.spin_axis) * c.spin_axis -
-          (work_.wheels[k].shaft_torque_nm + work_.wheels[k].brake_torque_nm) * c.spin_axis;
-    q(6 + i) = es.dot(f) - wf.suspension_n;  // J_v hub column e_s
+    // the contact force's moment except its spin-axis part (the spin DOF carries it), the
+    // drive and brake torques' reactions
+    tr += r.cross(f) + l.contact_moment_nm - l.contact_moment_nm.dot(s) * s - l.spin_torque_nm * s;
+    q(6 + i) = es.dot(f) - l.tire.suspension_n;  // J_v hub column e_s
   }
   if (any_rigid_) {
     for (int a = 0; a < wheel_count_ / 2; ++a) {
@@ -224,6 +219,26 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
   q.segment<3>(0) = ft;
   q.segment<3>(3) = tr;
   if (free_bodies_) free_bodies_->add_chassis_load(rigid_pose(y, z), q.head<6>());
+}
+
+VehicleFramework::CarrierLoad VehicleFramework::carrier_load(int i, const Mat3& rot,
+                                                             const Vector& y, const Vector& z,
+                                                             const Vec3& g, const Vec3& r,
+                                                             const Vec3& a0) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  const Vec3 fw = p_.axles[k / 2].unsprung_mass_kg * (g - a0);
+  CarrierLoad l{
+      .force_n = fw,
+      .contact_moment_nm = Vec3::Zero(),
+      .contact = contact(rot, y, z, i),
+      .tire = {},
+      .spin_torque_nm = work_.wheels[k].shaft_torque_nm + work_.wheels[k].brake_torque_nm};
+  l.tire = wheel_forces(l.contact, y, z, i);
+  const WheelContact& c = l.contact;
+  // the tire force acts at the wheel centre; its moment about the centre
+  l.force_n = fw + l.tire.force_x_n * c.ex + l.tire.force_y_n * c.ey + l.tire.load_n * c.normal;
+  l.contact_moment_nm = (c.lever_m - r).cross(l.force_n - fw);
+  return l;
 }
 
 void VehicleFramework::suspension_jacobians(int i, const Vector& y, const Vector& z, Matrix& dq_dy,

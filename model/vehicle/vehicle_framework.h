@@ -106,6 +106,19 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
  private:
   /// What the tire of wheel i sees at contact c (spin of the state, r_D from the penetration).
   [[nodiscard]] tire::TireKinematics tire_kinematics(const WheelContact& c, int i) const noexcept;
+  /// Wheel i's load on its carrier (applied_forces; independent hub or rigid axle).
+  struct CarrierLoad {
+    Vec3 force_n;            ///< at the wheel centre: weight, inertia, tire force (chassis axes)
+    Vec3 contact_moment_nm;  ///< the tire force's moment about the wheel centre
+    WheelContact contact;
+    WheelForces tire;
+    double spin_torque_nm;  ///< drive + brake torque about the spin axis
+  };
+  /// At wheel centre r with the velocity-dependent acceleration a0 (transport, Coriolis: the
+  /// hub's or the axle's own) and gravity g (chassis axes).
+  [[nodiscard]] CarrierLoad carrier_load(int i, const Mat3& rot, const Vector& y, const Vector& z,
+                                         const Vec3& g, const Vec3& r,
+                                         const Vec3& a0) const noexcept;
   void suspension_jacobians(int i, const Vector& y, const Vector& z, Matrix& dq_dy,
                             Matrix& dq_dz) const noexcept;
   void tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv, const Vector& y, const Vector& z,

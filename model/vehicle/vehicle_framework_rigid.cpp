@@ -93,24 +93,21 @@ void VehicleFramework::rigid_wheel_applied(int i, const Mat3& rot, const Vector&
   const auto k = static_cast<std::size_t>(i);
   const Eigen::Index h = 6 + 2 * (i / 2);
   const Vec3 v = z.segment<3>(0), w = z.segment<3>(3);
-  const double mw = p_.axles[k / 2].unsprung_mass_kg;
   const RigidWheelPoint pt = rigid_wheel_point(rigid_geometry_[k / 2], i % 2, y(h), y(h + 1));
   const Vec3& r = pt.centre_m;
   const Vec3 rel = Vec3::UnitZ() * z(h) + pt.d_droll_m * z(h + 1);
   // velocity-dependent acceleration: transport, Coriolis, and the roll's centripetal term
   const Vec3 a0 = w.cross(v) + w.cross(w.cross(r)) + 2.0 * w.cross(rel) +
                   z(h + 1) * z(h + 1) * roll_cross(roll_cross(pt.from_axis_m));
-  const Vec3 fw = mw * (g - a0);
-  const WheelContact c = contact(rot, y, z, i);
-  const WheelForces wf = wheel_forces(c, y, z, i);
-  const Vec3 f = fw + wf.force_x_n * c.ex + wf.force_y_n * c.ey + wf.load_n * c.normal;
+  const CarrierLoad l = carrier_load(i, rot, y, z, g, r, a0);
+  const Vec3& f = l.force_n;
+  const Vec3& s = l.contact.spin_axis;
   ft += f;
   // moment on the wheel carrier about its centre: the contact force's (except its spin-axis
-  // part, which the spin DOF carries) and the drive and brake torques' reactions
-  const Vec3 m_contact = (c.lever_m - r).cross(f - fw);
+  // part, which the spin DOF carries) and the drive and brake torques' reactions (summed apart
+  // from r x f, unlike the independent wheel's: the rounding of the existing runs is kept)
   const Vec3 m_carrier =
-      m_contact - m_contact.dot(c.spin_axis) * c.spin_axis -
-      (work_.wheels[k].shaft_torque_nm + work_.wheels[k].brake_torque_nm) * c.spin_axis;
+      l.contact_moment_nm - l.contact_moment_nm.dot(s) * s - l.spin_torque_nm * s;
   tr += r.cross(f) + m_carrier;
   q(h) += f.z();
   q(h + 1) += pt.d_droll_m.dot(f) + m_carrier.x();

@@ -25,7 +25,7 @@ void times_k(const Mat6& dq_ds, const Mat3& rot, const Mat3& e, Mat6& dq_dy) noe
 
 FreeBody::FreeBody(const FreeBodyParams& p, const road::Road& road, VehicleState& state,
                    const VehicleWorkspace& work, int slot)
-    : p_(p), road_(road), state_(state), work_(work), slot_(slot) {
+    : MountedBody<6>(p, road, state, work, slot) {
   mount_count_ = static_cast<int>(std::min<std::size_t>(p.mounts.size(), kMaxMounts));
   const Vec3 position = vec3(p.position_m);
   for (int i = 0; i < mount_count_; ++i) {
@@ -36,12 +36,8 @@ FreeBody::FreeBody(const FreeBodyParams& p, const road::Road& road, VehicleState
   crank_axis_ = vec3(p.crankshaft_axis).normalized();
 }
 
-FreeBody::Vector& FreeBody::coordinates() noexcept {
-  return state_.free_body_y[static_cast<std::size_t>(slot_)];
-}
-FreeBody::Vector& FreeBody::speeds() noexcept {
-  return state_.free_body_z[static_cast<std::size_t>(slot_)];
-}
+FreeBody::Vector& FreeBody::coordinates() noexcept { return state_.free_body_y[slot()]; }
+FreeBody::Vector& FreeBody::speeds() noexcept { return state_.free_body_z[slot()]; }
 
 void FreeBody::kinematics_inverse(const Vector& y, Matrix& k_inv) const noexcept {
   k_inv.setZero();
@@ -53,11 +49,6 @@ void FreeBody::mass_matrix(const Vector& y, Matrix& m) const noexcept {
   (void)y;
   m.setZero();
   m.diagonal() << p_.mass_kg, p_.mass_kg, p_.mass_kg, inertia_;
-}
-
-RigidPose FreeBody::chassis_pose() const noexcept {
-  // the chassis where the framework will be when the body's predicted coordinates are
-  return predicted_pose(state_.framework_y, state_.framework_z, work_.lookahead_s);
 }
 
 double FreeBody::reaction_torque_nm() const noexcept {
@@ -112,8 +103,7 @@ bool FreeBody::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
 }
 
 Vec6 FreeBody::chassis_load(const RigidPose& chassis) const noexcept {
-  const RigidPose body = rigid_pose(state_.free_body_y[static_cast<std::size_t>(slot_)],
-                                    state_.free_body_z[static_cast<std::size_t>(slot_)]);
+  const RigidPose body = rigid_pose(state_.free_body_y[slot()], state_.free_body_z[slot()]);
   Vec3 force = Vec3::Zero();
   // the drive torque's reaction: +T about the crank on the chassis (through the drive line)
   Vec3 moment = reaction_torque_nm() * (chassis.rot.transpose() * (body.rot * crank_axis_));
@@ -130,8 +120,7 @@ Vec6 FreeBody::chassis_load(const RigidPose& chassis) const noexcept {
 
 void FreeBody::chassis_jacobians(const RigidPose& chassis, Mat6& dq_ds,
                                  Mat6& dq_dz) const noexcept {
-  const RigidPose body = rigid_pose(state_.free_body_y[static_cast<std::size_t>(slot_)],
-                                    state_.free_body_z[static_cast<std::size_t>(slot_)]);
+  const RigidPose body = rigid_pose(state_.free_body_y[slot()], state_.free_body_z[slot()]);
   const Mat3 rt = chassis.rot.transpose();
   const Mat3 wc = skew(chassis.rate_radps);
   const Vec3 torque = reaction_torque_nm() * (rt * (body.rot * crank_axis_));
@@ -156,8 +145,7 @@ void FreeBody::chassis_jacobians(const RigidPose& chassis, Mat6& dq_ds,
 }
 
 double FreeBody::beyond_stop_m(const RigidPose& chassis) const noexcept {
-  const RigidPose body = rigid_pose(state_.free_body_y[static_cast<std::size_t>(slot_)],
-                                    state_.free_body_z[static_cast<std::size_t>(slot_)]);
+  const RigidPose body = rigid_pose(state_.free_body_y[slot()], state_.free_body_z[slot()]);
   double beyond = -1e9;
   for (int i = 0; i < mount_count_; ++i)
     beyond = std::max(
@@ -166,8 +154,7 @@ double FreeBody::beyond_stop_m(const RigidPose& chassis) const noexcept {
 }
 
 MountForce FreeBody::mount_force_now(int i) const noexcept {
-  const RigidPose body = rigid_pose(state_.free_body_y[static_cast<std::size_t>(slot_)],
-                                    state_.free_body_z[static_cast<std::size_t>(slot_)]);
+  const RigidPose body = rigid_pose(state_.free_body_y[slot()], state_.free_body_z[slot()]);
   return mount_force(mounts_[static_cast<std::size_t>(i)],
                      rigid_pose(state_.framework_y, state_.framework_z), body);
 }

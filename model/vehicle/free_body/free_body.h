@@ -11,18 +11,14 @@
 
 #include <Eigen/Core>
 
-#include "model/road/road.h"
-#include "model/solver/mechanical_block.h"
-#include "model/vehicle/free_body/mount.h"
-#include "model/vehicle/vehicle_state.h"
-#include "model/vehicle/vehicle_workspace.h"
+#include "model/vehicle/free_body/mounted_body.h"
 
 namespace rig::model::vehicle {
 
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 
-class FreeBody final : public solver::MechanicalBlock<6> {
+class FreeBody final : public MountedBody<6> {
  public:
   /// Its coordinates are state.free_body_y[slot], free_body_z[slot]; the chassis' are
   /// state.framework_y, framework_z; the engine torque is work.engine_torque_nm.
@@ -51,7 +47,6 @@ class FreeBody final : public solver::MechanicalBlock<6> {
   /// The largest |d| - clearance over its mounts and axes (> 0: on its stops).
   [[nodiscard]] double beyond_stop_m(const RigidPose& chassis) const noexcept;
 
-  [[nodiscard]] const FreeBodyParams& params() const noexcept { return p_; }
   [[nodiscard]] int mount_count() const noexcept { return mount_count_; }
   [[nodiscard]] const Mount& mount(int i) const noexcept {
     return mounts_[static_cast<std::size_t>(i)];
@@ -62,13 +57,6 @@ class FreeBody final : public solver::MechanicalBlock<6> {
   [[nodiscard]] double reaction_torque_nm() const noexcept;
 
  private:
-  [[nodiscard]] RigidPose chassis_pose() const noexcept;
-
-  const FreeBodyParams& p_;
-  const road::Road& road_;
-  VehicleState& state_;
-  const VehicleWorkspace& work_;
-  int slot_;
   int mount_count_ = 0;
   std::array<Mount, kMaxMounts> mounts_{};
   Vec3 inertia_ = Vec3::Zero();

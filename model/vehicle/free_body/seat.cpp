@@ -6,7 +6,7 @@ namespace rig::model::vehicle {
 
 Seat::Seat(const FreeBodyParams& p, const road::Road& road, VehicleState& state,
            const VehicleWorkspace& work, int slot)
-    : p_(p), road_(road), state_(state), work_(work), slot_(slot) {
+    : MountedBody<1>(p, road, state, work, slot) {
   point_ = Vec3(p.position_m[0], p.position_m[1], p.position_m[2]);
   if (!p.mounts.empty()) {
     const MountParams& m = p.mounts.front();
@@ -17,10 +17,8 @@ Seat::Seat(const FreeBodyParams& p, const road::Road& road, VehicleState& state,
   }
 }
 
-Seat::Vector& Seat::coordinates() noexcept {
-  return state_.seat_y[static_cast<std::size_t>(slot_)];
-}
-Seat::Vector& Seat::speeds() noexcept { return state_.seat_z[static_cast<std::size_t>(slot_)]; }
+Seat::Vector& Seat::coordinates() noexcept { return state_.seat_y[slot()]; }
+Seat::Vector& Seat::speeds() noexcept { return state_.seat_z[slot()]; }
 
 void Seat::mass_matrix(const Vector& y, Matrix& m) const noexcept {
   (void)y;
@@ -34,10 +32,6 @@ double Seat::suspension_force_n(double e, double e_rate) const noexcept {
   return f;
 }
 
-RigidPose Seat::chassis_pose() const noexcept {
-  return predicted_pose(state_.framework_y, state_.framework_z, work_.lookahead_s);
-}
-
 Eigen::Vector2d Seat::point_height(const RigidPose& chassis) const noexcept {
   const Vec3 p = chassis.position_m + chassis.rot * point_;
   const Vec3 v = chassis.rot * (chassis.velocity_mps + chassis.rate_radps.cross(point_));
@@ -45,7 +39,7 @@ Eigen::Vector2d Seat::point_height(const RigidPose& chassis) const noexcept {
 }
 
 Eigen::Vector2d Seat::deflection(const RigidPose& chassis) const noexcept {
-  const auto k = static_cast<std::size_t>(slot_);
+  const auto k = slot();
   return Eigen::Vector2d(state_.seat_y[k](0), state_.seat_z[k](0)) - point_height(chassis);
 }
 

@@ -7,14 +7,12 @@
 
 #include <Eigen/Core>
 
-#include "model/road/road.h"
-#include "model/solver/mechanical_block.h"
 #include "model/vehicle/free_body/free_body.h"
-#include "model/vehicle/vehicle_workspace.h"
+#include "model/vehicle/free_body/mounted_body.h"
 
 namespace rig::model::vehicle {
 
-class Seat final : public solver::MechanicalBlock<1> {
+class Seat final : public MountedBody<1> {
  public:
   /// Its coordinate is state.seat_y[slot], its speed state.seat_z[slot].
   Seat(const FreeBodyParams& p, const road::Road& road, VehicleState& state,
@@ -35,18 +33,9 @@ class Seat final : public solver::MechanicalBlock<1> {
   /// The reaction on the chassis' 6 speeds at pose `chassis`.
   [[nodiscard]] Vec6 chassis_load(const RigidPose& chassis) const noexcept;
   [[nodiscard]] double beyond_stop_m(const RigidPose& chassis) const noexcept;
-  [[nodiscard]] const FreeBodyParams& params() const noexcept { return p_; }
 
  private:
   [[nodiscard]] Eigen::Vector2d point_height(const RigidPose& chassis) const noexcept;
-  /// The chassis at the step's predicted coordinates (VehicleWorkspace::lookahead_s).
-  [[nodiscard]] RigidPose chassis_pose() const noexcept;
-
-  const FreeBodyParams& p_;
-  const road::Road& road_;
-  VehicleState& state_;
-  const VehicleWorkspace& work_;
-  int slot_;
   Vec3 point_ = Vec3::Zero();  ///< chassis axes
   double k_ = 0, c_ = 0, clearance_ = 0, stop_k_ = 0;
 };

@@ -10,10 +10,10 @@
 #include <gtest/gtest.h>
 
 #include "io/config/vehicle_file.h"
-#include "model/solver/finite_difference.h"
 #include "model/vehicle/vehicle_model.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
+#include "tests/support/fd_jacobians.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -239,29 +239,6 @@ TEST(RigidAxle, StepSteerAtOneMillisecondWithoutAllocation) {
   EXPECT_LT(roll_late_max - roll_late_min, 1e-4);  // steady: no oscillation at h = 1 ms
 }
 
-template <int N>
-void fd_jacobians(const solver::MechanicalBlock<N>& block, const Eigen::Matrix<double, N, 1>& y,
-                  const Eigen::Matrix<double, N, 1>& z, Eigen::MatrixXd& dq_dy,
-                  Eigen::MatrixXd& dq_dz) {
-  const Eigen::Index n = y.size();
-  Eigen::Matrix<double, N, 1> q0(n), q1(n), yp = y, zp = z;
-  block.applied_forces(y, z, q0);
-  dq_dy.resize(n, n);
-  dq_dz.resize(n, n);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const double e = 1e-7 * (1 + std::abs(y(j)));
-    yp(j) += e;
-    block.applied_forces(yp, z, q1);
-    dq_dy.col(j) = (q1 - q0) / e;
-    yp(j) = y(j);
-    const double f = 1e-7 * (1 + std::abs(z(j)));
-    zp(j) += f;
-    block.applied_forces(y, zp, q1);
-    dq_dz.col(j) = (q1 - q0) / f;
-    zp(j) = z(j);
-  }
-}
-
 TEST(RigidAxle, AnalyticPartialJacobiansMatchFiniteDifferences) {
   Eigen::internal::set_is_malloc_allowed(true);
   VehicleModel m(rigid_truck(), 1e-3);
@@ -276,13 +253,17 @@ TEST(RigidAxle, AnalyticPartialJacobiansMatchFiniteDifferences) {
   const Eigen::Index n = fw.size();
   Eigen::MatrixXd ay(n, n), az(n, n), fy, fz;
   ASSERT_TRUE(fw.force_jacobians(fw.coordinates(), fw.speeds(), ay, az));
-  fd_jacobians<Eigen::Dynamic>(fw, fw.coordinates(), fw.speeds(), fy, fz);
+  test::fd_jacobians<Eigen::Dynamic>(fw, fw.coordinates(), fw.speeds(), fy, fz);
   // the axles' heave and roll rows and columns (springs, bars, tires vertical) are the whole
   // derivative there; the damping paths are taken at fixed f (eq. 24)
   const auto axles = [&](const Eigen::MatrixXd& x) { return x.bottomRightCorner(n - 6, n - 6); };
+  // with the solver's forward-difference step: 5.8e-4 and 3.3e-4
+  std::printf("axles' partials vs forward differences: dq/dy %.2e, dq/dz %.2e\n",
+              test::relative_error(axles(ay), axles(fy)),
+              test::relative_error(axles(az), axles(fz)));
   EXPECT_LT((axles(ay) - axles(fy)).norm(), 1e-3 * axles(fy).norm()) << axles(ay) << "\n"
                                                                      << axles(fy);
-  EXPECT_LT((axles(az) - axles(fz)).norm(), 2e-2 * axles(fz).norm()) << axles(az) << "\n"
+  EXPECT_LT((axles(az) - axles(fz)).norm(), 2e-3 * axles(fz).norm()) << axles(az) << "\n"
                                                                      << axles(fz);
   // the body's heave and roll against the axles' (tire vertical through J_P)
   for (Eigen::Index j = 6; j < n; ++j) {

@@ -20,6 +20,7 @@
 #include "model/vehicle/vehicle_model.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
+#include "tests/support/fd_jacobians.h"
 #include "tests/support/step_steer.h"
 
 namespace rig::model::vehicle {
@@ -260,30 +261,6 @@ TEST(Vehicle, SteadyStateCircleUndersteerGradientAndSaturation) {
   EXPECT_LT(ay_max, 1.05 * 9.81);
 }
 
-/// Forward-difference Jacobians of a mechanical block's q, for comparison with the analytic ones.
-template <int N>
-void fd_jacobians(const solver::MechanicalBlock<N>& block, const Eigen::Matrix<double, N, 1>& y,
-                  const Eigen::Matrix<double, N, 1>& z, Eigen::MatrixXd& dq_dy,
-                  Eigen::MatrixXd& dq_dz) {
-  const Eigen::Index n = y.size();
-  Eigen::Matrix<double, N, 1> q0(n), q1(n), yp = y, zp = z;
-  block.applied_forces(y, z, q0);
-  dq_dy.resize(n, n);
-  dq_dz.resize(n, n);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const double e = 1e-7 * (1 + std::abs(y(j)));
-    yp(j) += e;
-    block.applied_forces(yp, z, q1);
-    dq_dy.col(j) = (q1 - q0) / e;
-    yp(j) = y(j);
-    const double f = 1e-7 * (1 + std::abs(z(j)));
-    zp(j) += f;
-    block.applied_forces(y, zp, q1);
-    dq_dz.col(j) = (q1 - q0) / f;
-    zp(j) = z(j);
-  }
-}
-
 TEST(Vehicle, AnalyticPartialJacobiansMatchFiniteDifferences) {
   Eigen::internal::set_is_malloc_allowed(true);
   VehicleModel m(sedan(), 1e-3);
@@ -299,10 +276,13 @@ TEST(Vehicle, AnalyticPartialJacobiansMatchFiniteDifferences) {
   const Eigen::Index n = fw.size();
   Eigen::MatrixXd ay(n, n), az(n, n), fy, fz;
   ASSERT_TRUE(fw.force_jacobians(fw.coordinates(), fw.speeds(), ay, az));
-  fd_jacobians<Eigen::Dynamic>(fw, fw.coordinates(), fw.speeds(), fy, fz);
+  test::fd_jacobians<Eigen::Dynamic>(fw, fw.coordinates(), fw.speeds(), fy, fz);
   const auto hub = [&](const Eigen::MatrixXd& x) { return x.bottomRightCorner(n - 6, n - 6); };
-  EXPECT_LT((hub(ay) - hub(fy)).norm(), 1e-3 * hub(fy).norm()) << hub(ay) << "\n" << hub(fy);
-  EXPECT_LT((hub(az) - hub(fz)).norm(), 2e-2 * hub(fz).norm()) << hub(az) << "\n" << hub(fz);
+  // forward differences of the solver's step (sqrt(eps) max(1, |x|)): 6.8e-5 and 1.6e-5
+  std::printf("hub partials vs forward differences: dq/dy %.2e, dq/dz %.2e\n",
+              test::relative_error(hub(ay), hub(fy)), test::relative_error(hub(az), hub(fz)));
+  EXPECT_LT((hub(ay) - hub(fy)).norm(), 5e-4 * hub(fy).norm()) << hub(ay) << "\n" << hub(fy);
+  EXPECT_LT((hub(az) - hub(fz)).norm(), 2e-4 * hub(fz).norm()) << hub(az) << "\n" << hub(fz);
   EXPECT_NEAR(ay(2, 2), fy(2, 2), 1e-3 * std::abs(fy(2, 2)));  // heave stiffness of the tires
   EXPECT_NEAR(az(2, 2), fz(2, 2), 2e-2 * std::abs(fz(2, 2)));  // tire vertical damping
   // tire lateral damping paths: the analytic one is taken at fixed f (eq. 24); in this turn
@@ -316,9 +296,12 @@ TEST(Vehicle, AnalyticPartialJacobiansMatchFiniteDifferences) {
   Eigen::Matrix2d sy2, sz2;
   ASSERT_TRUE(st.force_jacobians(st.coordinates(), st.speeds(), sy2, sz2));
   Eigen::MatrixXd gy, gz;
-  fd_jacobians<2>(st, st.coordinates(), st.speeds(), gy, gz);
-  EXPECT_LT((Eigen::MatrixXd(sy2) - gy).norm(), 1e-3 * gy.norm()) << sy2 << "\n" << gy;
-  EXPECT_LT((Eigen::MatrixXd(sz2) - gz).norm(), 1e-3 * gz.norm()) << sz2 << "\n" << gz;
+  test::fd_jacobians<2>(st, st.coordinates(), st.speeds(), gy, gz);
+  // complete and nearly linear: 2.1e-5 and 1e-7
+  std::printf("simple steering vs forward differences: dq/dy %.2e, dq/dz %.2e\n",
+              test::relative_error(sy2, gy), test::relative_error(sz2, gz));
+  EXPECT_LT((Eigen::MatrixXd(sy2) - gy).norm(), 2e-4 * gy.norm()) << sy2 << "\n" << gy;
+  EXPECT_LT((Eigen::MatrixXd(sz2) - gz).norm(), 1e-6 * gz.norm()) << sz2 << "\n" << gz;
 }
 
 TEST(Vehicle, TruckStaticEquilibriumAndGradeHoldAtOneAndTwoMilliseconds) {
@@ -489,8 +472,8 @@ TEST(VehicleConfig, ManeuverFilesNameTheirVehicleAndRunAtOneMillisecond) {
   // + weave, parking effort (0 and 5 km/h), returnability (issue 15); + the Belgian block (sedan,
   // truck), sine-wave road, ISO 8608 class C, cleat, mu-jump and mu-split braking (issue 16);
   // + braking 100-0 (issue 18); + the mu-split accelerations of the sedan-4x4 and the 6x4
-  // tractor's differentials (issue 17 item 6), the tractor with cab, engine and seat (item 4), the truck on rigid axles
-  // (items 1, 3)
+  // tractor's differentials (issue 17 item 6), the tractor with cab, engine and seat (item 4), the
+  // truck on rigid axles (items 1, 3)
   EXPECT_EQ(files, 21);
 }
 
