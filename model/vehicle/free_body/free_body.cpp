@@ -55,27 +55,62 @@ double FreeBody::reaction_torque_nm() const noexcept {
   return p_.kind == FreeBodyKind::kEngine ? work_.engine_torque_nm : 0.0;
 }
 
+const FreeBody::BodySide& FreeBody::body_side(const Vector& y, const Vector& z) const noexcept {
+  InputKey<25>::Values in;
+  std::size_t at = put(in, 0, y.data(), 6);
+  at = put(in, at, z.data(), 6);
+  const ChassisInputs chassis = chassis_inputs();
+  put(in, at, chassis.data(), chassis.size());
+  if (body_key_.hit(in)) return body_side_;
+  body_side_.chassis = chassis_pose();
+  body_side_.body = rigid_pose(y, z);
+  for (int i = 0; i < mount_count_; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    body_side_.forces[k] = mount_force(mounts_[k], body_side_.chassis, body_side_.body);
+  }
+  return body_side_;
+}
+
+const FreeBody::ChassisSide& FreeBody::chassis_side(const RigidPose& chassis) const noexcept {
+  InputKey<30>::Values in;
+  std::size_t at = put(in, 0, chassis.rot.data(), 9);
+  at = put(in, at, chassis.position_m.data(), 3);
+  at = put(in, at, chassis.velocity_mps.data(), 3);
+  at = put(in, at, chassis.rate_radps.data(), 3);
+  at = put(in, at, state_.free_body_y[slot()].data(), 6);
+  put(in, at, state_.free_body_z[slot()].data(), 6);
+  if (chassis_side_key_.hit(in)) return chassis_side_;
+  chassis_side_.body = rigid_pose(state_.free_body_y[slot()], state_.free_body_z[slot()]);
+  for (int i = 0; i < mount_count_; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    chassis_side_.forces[k] = mount_force(mounts_[k], chassis, chassis_side_.body);
+  }
+  return chassis_side_;
+}
+
 void FreeBody::applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept {
-  const RigidPose chassis = chassis_pose();
-  const RigidPose body = rigid_pose(y, z);
+  const BodySide& side = body_side(y, z);
+  const RigidPose& chassis = side.chassis;
+  const RigidPose& body = side.body;
   const Vec3& v = body.velocity_mps;
   const Vec3& w = body.rate_radps;
   Vec3 force = p_.mass_kg * (body.rot.transpose() * road_.gravity_mps2() - w.cross(v));
   Vec3 moment = -w.cross(inertia_.cwiseProduct(w)) - reaction_torque_nm() * crank_axis_;
   const Mat3 to_body = body.rot.transpose() * chassis.rot;
   for (int i = 0; i < mount_count_; ++i) {
-    const Mount& m = mounts_[static_cast<std::size_t>(i)];
-    const Vec3 f = to_body * mount_force(m, chassis, body).force_n;
+    const auto k = static_cast<std::size_t>(i);
+    const Vec3 f = to_body * side.forces[k].force_n;
     force += f;
-    moment += m.body_point.cross(f);
+    moment += mounts_[k].body_point.cross(f);
   }
   q << force, moment;
 }
 
 bool FreeBody::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
                                Matrix& dq_dz) const noexcept {
-  const RigidPose chassis = chassis_pose();
-  const RigidPose body = rigid_pose(y, z);
+  const BodySide& side = body_side(y, z);
+  const RigidPose& chassis = side.chassis;
+  const RigidPose& body = side.body;
   const Mat3 a = chassis.rot.transpose() * body.rot;  // body axes -> chassis axes
   const Mat3 wc = skew(chassis.rate_radps);
   Mat6 dq_ds = Mat6::Zero();
@@ -84,7 +119,7 @@ bool FreeBody::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
   dq_ds.block<3, 3>(0, 3) = skew(p_.mass_kg * (body.rot.transpose() * road_.gravity_mps2()));
   for (int i = 0; i < mount_count_; ++i) {
     const Mount& m = mounts_[static_cast<std::size_t>(i)];
-    const MountForce mf = mount_force(m, chassis, body);
+    const MountForce& mf = side.forces[static_cast<std::size_t>(i)];
     const Eigen::Matrix<double, 3, 6> j = point_jacobian(m.body_point);
     const Eigen::Matrix<double, 3, 6> aj = a * j;  // d(deflection)/ds, chassis axes
     const Mat3 k = chassis_axes_matrix(m, mf.rate_stiffness);
@@ -103,15 +138,16 @@ bool FreeBody::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
 }
 
 Vec6 FreeBody::chassis_load(const RigidPose& chassis) const noexcept {
-  const RigidPose body = rigid_pose(state_.free_body_y[slot()], state_.free_body_z[slot()]);
+  const ChassisSide& side = chassis_side(chassis);
+  const RigidPose& body = side.body;
   Vec3 force = Vec3::Zero();
   // the drive torque's reaction: +T about the crank on the chassis (through the drive line)
   Vec3 moment = reaction_torque_nm() * (chassis.rot.transpose() * (body.rot * crank_axis_));
   for (int i = 0; i < mount_count_; ++i) {
-    const Mount& m = mounts_[static_cast<std::size_t>(i)];
-    const Vec3 f = -mount_force(m, chassis, body).force_n;
+    const auto k = static_cast<std::size_t>(i);
+    const Vec3 f = -side.forces[k].force_n;
     force += f;
-    moment += m.chassis_point.cross(f);
+    moment += mounts_[k].chassis_point.cross(f);
   }
   Vec6 q;
   q << force, moment;
@@ -120,14 +156,15 @@ Vec6 FreeBody::chassis_load(const RigidPose& chassis) const noexcept {
 
 void FreeBody::chassis_jacobians(const RigidPose& chassis, Mat6& dq_ds,
                                  Mat6& dq_dz) const noexcept {
-  const RigidPose body = rigid_pose(state_.free_body_y[slot()], state_.free_body_z[slot()]);
+  const ChassisSide& side = chassis_side(chassis);
+  const RigidPose& body = side.body;
   const Mat3 rt = chassis.rot.transpose();
   const Mat3 wc = skew(chassis.rate_radps);
   const Vec3 torque = reaction_torque_nm() * (rt * (body.rot * crank_axis_));
   dq_ds.block<3, 3>(3, 3) += skew(torque);  // the reaction turns with the chassis
   for (int i = 0; i < mount_count_; ++i) {
     const Mount& m = mounts_[static_cast<std::size_t>(i)];
-    const MountForce mf = mount_force(m, chassis, body);
+    const MountForce& mf = side.forces[static_cast<std::size_t>(i)];
     const Vec3 pb = body.position_m + body.rot * m.body_point;
     const Vec3 vb = body.rot * (body.velocity_mps + body.rate_radps.cross(m.body_point));
     const Vec3 body_point = rt * (pb - chassis.position_m);             // = rel + chassis point

@@ -57,10 +57,29 @@ class FreeBody final : public MountedBody<6> {
   [[nodiscard]] double reaction_torque_nm() const noexcept;
 
  private:
+  /// The mounts at the block's poses (the chassis predicted, the body at (y, z)), evaluated
+  /// once per (y, z) and chassis state: applied_forces after force_jacobians reuses them.
+  struct BodySide {
+    RigidPose chassis, body;
+    std::array<MountForce, kMaxMounts> forces{};
+  };
+  [[nodiscard]] const BodySide& body_side(const Vector& y, const Vector& z) const noexcept;
+  /// The mounts at the chassis pose the framework asks with and the body's newest state, once
+  /// per pair: chassis_load and chassis_jacobians share them.
+  struct ChassisSide {
+    RigidPose body;
+    std::array<MountForce, kMaxMounts> forces{};
+  };
+  [[nodiscard]] const ChassisSide& chassis_side(const RigidPose& chassis) const noexcept;
+
   int mount_count_ = 0;
   std::array<Mount, kMaxMounts> mounts_{};
   Vec3 inertia_ = Vec3::Zero();
   Vec3 crank_axis_ = Vec3::UnitX();
+  mutable InputKey<25> body_key_;  // per-step caches (input_key.h)
+  mutable BodySide body_side_;
+  mutable InputKey<30> chassis_side_key_;
+  mutable ChassisSide chassis_side_;
 };
 
 /// The body's pose relative to the chassis: position of its CG from the design position and
