@@ -14,6 +14,8 @@ namespace rig::test {
 inline constexpr const char* kCarTrailer = RIG_SOURCE_DIR "/config/combinations/car-trailer.toml";
 inline constexpr const char* kTractorSemi =
     RIG_SOURCE_DIR "/config/combinations/tractor-semitrailer.toml";
+inline constexpr const char* kTractorSemi40t =
+    RIG_SOURCE_DIR "/config/combinations/tractor-semitrailer-40t.toml";
 inline constexpr const char* kCarTowBarCar =
     RIG_SOURCE_DIR "/config/combinations/car-towbar-car.toml";
 

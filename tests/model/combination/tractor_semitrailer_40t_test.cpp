@@ -18,7 +18,7 @@
 namespace rig::model::combination {
 namespace {
 
-constexpr const char* k40t = RIG_SOURCE_DIR "/config/combinations/tractor-semitrailer-40t.toml";
+using test::kTractorSemi40t;
 
 using vehicle::VehicleParams;
 
@@ -82,7 +82,7 @@ HandLoads hand_loads(const CombinationParams& p) {
 }
 
 TEST(TractorSemitrailer40t, StaticAxleAndKingpinLoadsMatchTheHandCalculation) {
-  const CombinationParams p = test::load_combination(k40t);
+  const CombinationParams p = test::load_combination(kTractorSemi40t);
   ASSERT_EQ(p.units.size(), 2u);
   ASSERT_EQ(p.units[0].axles.size(), 3u);
   ASSERT_EQ(p.units[1].axles.size(), 3u);
@@ -123,7 +123,7 @@ TEST(TractorSemitrailer40t, StaticAxleAndKingpinLoadsMatchTheHandCalculation) {
 // to stand-still; the joints' Newton converges in 1 or 2 iterations in every step, and the
 // coupled step allocates nothing (malloc counter + EIGEN_RUNTIME_NO_MALLOC).
 TEST(TractorSemitrailer40t, AtMostTwoNewtonIterationsAndNoAllocationPerStep) {
-  Combination c(test::load_combination(k40t), 1e-3);
+  Combination c(test::load_combination(kTractorSemi40t), 1e-3);
   c.set_forward_speed(13.89);
   Signals s = test::all_driver_inputs();
   const auto inputs = [](double t, Signals& sig) {
