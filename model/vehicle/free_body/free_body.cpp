@@ -21,6 +21,12 @@ void times_k(const Mat6& dq_ds, const Mat3& rot, const Mat3& e, Mat6& dq_dy) noe
   dq_dy.rightCols<3>() = dq_ds.rightCols<3>() * e;
 }
 
+/// The mount's rates in chassis axes with its stops' (off its stops: the constant springs').
+Mat3 rates(const Mount& m, const MountForce& f) noexcept {
+  return f.rate_stiffness == m.stiffness ? m.stiffness_matrix
+                                         : chassis_axes_matrix(m, f.rate_stiffness);
+}
+
 }  // namespace
 
 FreeBody::FreeBody(const FreeBodyParams& p, const road::Road& road, VehicleState& state,
@@ -122,8 +128,8 @@ bool FreeBody::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
     const MountForce& mf = side.forces[static_cast<std::size_t>(i)];
     const Eigen::Matrix<double, 3, 6> j = point_jacobian(m.body_point);
     const Eigen::Matrix<double, 3, 6> aj = a * j;  // d(deflection)/ds, chassis axes
-    const Mat3 k = chassis_axes_matrix(m, mf.rate_stiffness);
-    const Mat3 c = chassis_axes_matrix(m, m.damping);
+    const Mat3 k = rates(m, mf);
+    const Mat3& c = m.damping_matrix;
     // d(deflection rate)/ds: the chassis turning under the body, the body's own velocity turning
     Eigen::Matrix<double, 3, 6> dd_ds = -wc * aj;
     dd_ds.rightCols<3>() -= a * skew(body.velocity_mps + body.rate_radps.cross(m.body_point));
@@ -172,8 +178,8 @@ void FreeBody::chassis_jacobians(const RigidPose& chassis, Mat6& dq_ds,
     Eigen::Matrix<double, 3, 6> dd_ds;
     dd_ds.leftCols<3>() = wc;
     dd_ds.rightCols<3>() = skew(rt * vb) - wc * skew(body_point);
-    const Mat3 k = chassis_axes_matrix(m, mf.rate_stiffness);
-    const Mat3 c = chassis_axes_matrix(m, m.damping);
+    const Mat3 k = rates(m, mf);
+    const Mat3& c = m.damping_matrix;
     const Eigen::Matrix<double, 6, 3> jt = point_jacobian(m.chassis_point).transpose();
     // the chassis gets F = K d + C d' (minus the force on the body)
     dq_ds.noalias() += jt * (-k * jd + c * dd_ds);

@@ -18,6 +18,8 @@ Mount make_mount(const MountParams& m, const Vec3& body_position_m, double margi
     out.stop_stiffness(k) = m.stop_stiffness_npm[i];
   }
   out.margin_m = margin_m;
+  out.stiffness_matrix = chassis_axes_matrix(out, out.stiffness);
+  out.damping_matrix = chassis_axes_matrix(out, out.damping);
   return out;
 }
 

@@ -51,6 +51,8 @@ struct Mount {
   Vec3 stiffness = Vec3::Zero(), damping = Vec3::Zero();
   Vec3 clearance = Vec3::Zero(), stop_stiffness = Vec3::Zero();
   double margin_m = 0.01;  ///< the buffer travel of the progressive stop
+  /// The spring's and the damper's rates in chassis axes (chassis_axes_matrix; constant).
+  Mat3 stiffness_matrix = Mat3::Zero(), damping_matrix = Mat3::Zero();
 };
 
 [[nodiscard]] Mount make_mount(const MountParams& m, const Vec3& body_position_m,
