@@ -1,6 +1,7 @@
 #include "io/config/frame_config.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace rig::io::config {
@@ -20,6 +21,9 @@ void check_split(StrictTable& t, const VehicleParams& p, double split_x_m) {
                                    std::to_string(front) + " m) and the rear axle (" +
                                    std::to_string(rear) + " m), away from every axle");
   for (const auto& a : p.axles) {
+    if (std::abs(a.position_x_m - split_x_m) < 0.05)
+      throw t.error("split_x_m", "the split must lie at least 0.05 m from every axle (an axle at " +
+                                     std::to_string(a.position_x_m) + " m)");
     if (a.position_x_m < split_x_m && a.kind == model::vehicle::AxleKind::kRigid)
       throw t.error("split_x_m",
                     "a rigid axle behind the split is not supported yet (frame torsion moves "

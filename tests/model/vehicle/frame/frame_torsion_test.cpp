@@ -244,6 +244,17 @@ TEST(FrameTorsion, LoadTransferDistributionAsTheTwoPartRollModel) {
   }
   // the soft frame moves load transfer to the front axle (the front part's moment stays there)
   EXPECT_GT(m_with[0] - l_with[0], m_without[0] - l_without[0]);
+  // the config's torsion axis, 0.95 m above the axles' roll axis: a twist about it moves the
+  // rear contacts sideways (0.95 m per rad), which the tires' lateral stiffness resists at rest -
+  // a stiffer twist than the frame's alone, so the front's share falls between the two
+  VehicleParams high = with, level_high = with;
+  high.frame.axis_height_m = level_high.frame.axis_height_m = 0.95;
+  level_high.road.bank = 0;
+  const double front_high =
+      measured_transfer(high, seconds)[0] - measured_transfer(level_high, seconds)[0];
+  std::printf("front axle's transfer with the torsion axis at 0.95 m: %.1f N\n", front_high);
+  EXPECT_GT(front_high, m_without[0] - l_without[0]);
+  EXPECT_LT(front_high, m_with[0] - l_with[0]);
 }
 
 /// The mean period of a signal's upward zero crossings (linear interpolation).
