@@ -56,6 +56,11 @@ struct UnitReport {
   std::array<double, 3> velocity_mps{};            ///< CG velocity, body axes
   std::array<double, 3> angular_velocity_radps{};  ///< body axes
   std::array<double, 3> acceleration_mps2{};       ///< CG acceleration, body axes
+  /// Frame torsion (`[frame]`, model/vehicle/frame): the rear part's roll against the front
+  /// (+ left side up), its rate, the moment the frame transmits; 0 without [frame].
+  double frame_twist_rad = 0;
+  double frame_twist_rate_radps = 0;
+  double frame_torsion_moment_nm = 0;
   std::int32_t wheel_count = 0;
   std::array<WheelReport, kMaxWheelsPerUnit> wheels{};
 };

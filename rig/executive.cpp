@@ -36,6 +36,9 @@ void copy_report(const model::ModelReport& from, model::ModelReport& to) noexcep
     v.velocity_mps = u.velocity_mps;
     v.angular_velocity_radps = u.angular_velocity_radps;
     v.acceleration_mps2 = u.acceleration_mps2;
+    v.frame_twist_rad = u.frame_twist_rad;
+    v.frame_twist_rate_radps = u.frame_twist_rate_radps;
+    v.frame_torsion_moment_nm = u.frame_torsion_moment_nm;
     v.wheel_count = u.wheel_count;
     for (int i = 0; i < u.wheel_count && i < model::kMaxWheelsPerUnit; ++i)
       v.wheels[static_cast<std::size_t>(i)] = u.wheels[static_cast<std::size_t>(i)];

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 #include "io/config/differential_config.h"
+#include "io/config/frame_config.h"
 #include "io/config/free_body_config.h"
 #include "model/report.h"
 #include "model/vehicle/rigid_axle.h"
@@ -565,6 +566,7 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file,
     throw t.error("drivetrain", "a vehicle with a driven axle needs a [drivetrain] table");
   }
   p.free_bodies = read_free_bodies(t);  // [[free_body]]: cab, engine, seat (none: empty)
+  read_frame(t, p);                     // [frame]: frame torsion (none: one rigid chassis)
   t.finish();
   return p;
 }

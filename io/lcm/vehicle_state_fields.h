@@ -56,6 +56,12 @@ struct VehicleStateFields {
        "accel_y_mps2"},
       {"unit_az_mps2", "m/s^2", element<&U::acceleration_mps2, 2>, &S::unit_az_mps2,
        "accel_z_mps2"},
+      {"unit_frame_twist_rad", "rad", member<&U::frame_twist_rad>, &S::unit_frame_twist_rad,
+       "frame_twist_rad"},
+      {"unit_frame_twist_rate_radps", "rad/s", member<&U::frame_twist_rate_radps>,
+       &S::unit_frame_twist_rate_radps, "frame_twist_rate_radps"},
+      {"unit_frame_torsion_moment_nm", "N m", member<&U::frame_torsion_moment_nm>,
+       &S::unit_frame_torsion_moment_nm, "frame_torsion_moment_nm"},
   };
 
   /// Per wheel (num_wheels: every unit's wheels, front to rear, left before right).

@@ -6,16 +6,37 @@
 namespace rig::model::solver {
 
 Eigen::Index ArrowheadPartition::total_size() const noexcept {
-  return std::accumulate(leaf_sizes.begin(), leaf_sizes.end(), body_size);
+  return std::accumulate(leaf_sizes.begin(), leaf_sizes.end(), body_size + body_tail_size);
 }
 
-ArrowheadFactorization::ArrowheadFactorization(const ArrowheadPartition& partition)
+namespace {
+
+/// The partition with its body tail counted in the body (the factorized order).
+ArrowheadPartition factorized(ArrowheadPartition p) {
+  p.body_size += p.body_tail_size;
+  p.body_tail_size = 0;
+  return p;
+}
+
+}  // namespace
+
+ArrowheadFactorization::ArrowheadFactorization(const ArrowheadPartition& given)
+    : ArrowheadFactorization(factorized(given), given.body_size, given.body_tail_size) {}
+
+ArrowheadFactorization::ArrowheadFactorization(const ArrowheadPartition& partition,
+                                               Eigen::Index head, Eigen::Index tail)
     : partition_(partition),
       schur_(partition.body_size, partition.body_size),
       schur_lu_(partition.body_size),
       rhs_(partition.total_size()),
       sol_(partition.total_size()),
-      body_rhs_(partition.body_size) {
+      body_rhs_(partition.body_size),
+      head_(head),
+      tail_(tail) {
+  if (tail_ > 0) {
+    ordered_.resize(partition.total_size(), partition.total_size());
+    given_.resize(partition.total_size());
+  }
   const Eigen::Index nb = partition.body_size;
   Eigen::Index offset = nb;
   Eigen::Index max_leaf = 0;
@@ -73,11 +94,42 @@ void ArrowheadFactorization::solve_column_body6_leaves2() const noexcept {
   }
 }
 
+void ArrowheadFactorization::to_factorized_order(const Eigen::VectorXd& given,
+                                                 Eigen::VectorXd& ordered) const noexcept {
+  const Eigen::Index n = given.size(), leaves = n - head_ - tail_;
+  ordered.head(head_) = given.head(head_);
+  ordered.segment(head_, tail_) = given.tail(tail_);
+  ordered.tail(leaves) = given.segment(head_, leaves);
+}
+
+void ArrowheadFactorization::from_factorized_order(const Eigen::VectorXd& ordered,
+                                                   Eigen::VectorXd& given) const noexcept {
+  const Eigen::Index n = given.size(), leaves = n - head_ - tail_;
+  given.head(head_) = ordered.head(head_);
+  given.tail(tail_) = ordered.segment(head_, tail_);
+  given.segment(head_, leaves) = ordered.tail(leaves);
+}
+
 void ArrowheadFactorization::compute(const Matrix& a) noexcept {
   if (body6_leaves2_) {
     compute_body6_leaves2(a);
     return;
   }
+  if (tail_ == 0) {
+    compute_general(a);
+    return;
+  }
+  // P A P^T: rows and columns in the factorized order (body head, body tail, leaves)
+  const Eigen::Index n = a.rows(), h = head_, t = tail_, l = n - h - t;
+  const Eigen::Index src[3] = {0, n - t, h}, dst[3] = {0, h, h + t}, len[3] = {h, t, l};
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c)
+      ordered_.block(dst[r], dst[c], len[r], len[c]) = a.block(src[r], src[c], len[r], len[c]);
+  }
+  compute_general(ordered_);
+}
+
+void ArrowheadFactorization::compute_general(const Matrix& a) noexcept {
   const Eigen::Index nb = partition_.body_size;
   schur_ = a.topLeftCorner(nb, nb);
   for (std::size_t i = 0; i < leaf_lu_.size(); ++i) {

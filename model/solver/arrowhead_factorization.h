@@ -22,10 +22,14 @@
 
 namespace rig::model::solver {
 
-/// Partition of the speeds: the body block first, then the leaf blocks in order.
+/// Partition of the speeds: the body block first, then the leaf blocks in order, then (optional)
+/// `body_tail_size` more body speeds stored after the leaves (a vehicle's frame twist, appended
+/// so that the hub travels keep their indices): they belong to the body block (they couple to
+/// every leaf) and are moved next to it for the factorization.
 struct ArrowheadPartition {
   Eigen::Index body_size = 0;
   std::vector<Eigen::Index> leaf_sizes;  ///< one entry per leaf (axle)
+  Eigen::Index body_tail_size = 0;
   [[nodiscard]] Eigen::Index total_size() const noexcept;
 };
 
@@ -40,6 +44,8 @@ class ArrowheadFactorization {
   /// partition given at construction, so this constructor is not offered.
   explicit ArrowheadFactorization(Eigen::Index size) = delete;
 
+  /// The partition as factorized: a body tail is counted in body_size (and body_tail_size is 0),
+  /// so solve_body takes the body in that order (head, then tail).
   [[nodiscard]] const ArrowheadPartition& partition() const noexcept { return partition_; }
 
   /// Factorizes a (total_size x total_size).
@@ -49,9 +55,17 @@ class ArrowheadFactorization {
   template <typename Rhs, typename Dst>
   void solve(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dst>& x) const noexcept {
     for (Eigen::Index c = 0; c < b.cols(); ++c) {
-      rhs_ = b.col(c);
+      if (tail_ == 0) {
+        rhs_ = b.col(c);
+        solve_column();
+        x.col(c) = sol_;
+        continue;
+      }
+      given_ = b.col(c);
+      to_factorized_order(given_, rhs_);
       solve_column();
-      x.col(c) = sol_;
+      from_factorized_order(sol_, given_);
+      x.col(c) = given_;
     }
   }
 
@@ -78,7 +92,12 @@ class ArrowheadFactorization {
   }
 
  private:
+  ArrowheadFactorization(const ArrowheadPartition& partition, Eigen::Index head, Eigen::Index tail);
   void solve_column() const noexcept;
+  void compute_general(const Matrix& a) noexcept;
+  /// The body tail (stored last) moved behind the body head, and back.
+  void to_factorized_order(const Eigen::VectorXd& given, Eigen::VectorXd& ordered) const noexcept;
+  void from_factorized_order(const Eigen::VectorXd& ordered, Eigen::VectorXd& given) const noexcept;
   void compute_body6_leaves2(const Matrix& a) noexcept;
   void solve_column_body6_leaves2() const noexcept;
 
@@ -91,6 +110,9 @@ class ArrowheadFactorization {
   Eigen::MatrixXd schur_;                       ///< S
   Eigen::PartialPivLU<Eigen::MatrixXd> schur_lu_;
   mutable Eigen::VectorXd rhs_, sol_, body_rhs_, leaf_tmp_;
+  Eigen::Index head_ = 0, tail_ = 0;  ///< the given partition's body head and tail
+  Matrix ordered_;                    ///< A in the factorized order (tail_ > 0 only)
+  mutable Eigen::VectorXd given_;     ///< a column in the given order (tail_ > 0 only)
 
   // fixed-size path: body 6, every leaf 2
   using Mat6 = Eigen::Matrix<double, 6, 6>;

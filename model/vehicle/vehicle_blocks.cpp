@@ -11,7 +11,8 @@ namespace {
 solver::ArrowheadPartition framework_partition(const VehicleParams& p) {
   solver::ArrowheadPartition partition;
   partition.body_size = 6;
-  partition.leaf_sizes.assign(p.axles.size(), 2);  // two hub travels per axle
+  partition.leaf_sizes.assign(p.axles.size(), 2);      // two hub travels per axle
+  partition.body_tail_size = p.frame.enabled ? 1 : 0;  // the frame's twist, in the body's corner
   return partition;
 }
 

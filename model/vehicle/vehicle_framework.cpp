@@ -15,7 +15,7 @@ VehicleFramework::VehicleFramework(const VehicleParams& p, VehicleState& state,
       work_(work),
       road_(p.road),
       wheel_count_(2 * static_cast<int>(p.axles.size())),
-      n_(6 + 2 * static_cast<Eigen::Index>(p.axles.size())),
+      n_(6 + 2 * static_cast<Eigen::Index>(p.axles.size()) + (p.frame.enabled ? 1 : 0)),
       shares_(axle_shares(p)) {
   const double g = p.road.gravity_mps2;
   const auto& c = p.chassis;
@@ -45,6 +45,7 @@ VehicleFramework::VehicleFramework(const VehicleParams& p, VehicleState& state,
     probes_[k] = {0.1 * a.tire.tmeasy.radius_unloaded_m, 0.3 * a.tire.tmeasy.bore.contact_width_m};
   }
   setup_rigid_axles();
+  setup_frame();
 }
 
 Vec3 VehicleFramework::wheel_centre(int i, double s) const noexcept {
@@ -75,6 +76,10 @@ void VehicleFramework::mass_matrix(const Vector& y, Matrix& m) const noexcept {
       if (i % 2 == 0) rigid_mass_matrix(i / 2, y, m);
       continue;
     }
+    if (twisted(i)) {
+      rear_wheel_mass_matrix(i, y, m);
+      continue;
+    }
     const double mw = p_.axles[k / 2].unsprung_mass_kg;
     const Vec3 r = wheel_centre(i, y(6 + i));
     const Vec3 es = hub_axis(i);
@@ -92,6 +97,7 @@ void VehicleFramework::mass_matrix(const Vector& y, Matrix& m) const noexcept {
     m.block<1, 3>(h, 3) += mw * rxe.transpose();
     m(h, h) += mw * es.squaredNorm();
   }
+  if (twist_ >= 0) frame_mass_matrix(y, m);
 }
 
 WheelContact VehicleFramework::contact(const Vector& y, const Vector& z, int i) const noexcept {
@@ -106,6 +112,7 @@ WheelContact VehicleFramework::contact(const Mat3& rot, const Vector& y, const V
                                        int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
   if (rigid_[k / 2]) return rigid_contact(rot, y, z, i);
+  if (twisted(i)) return rear_wheel_contact(rot, y, z, i);
   const double r0 = p_.axles[k / 2].tire.tmeasy.radius_unloaded_m;
   if (road_.is_plane()) {
     return wheel_contact(road_, rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3),
@@ -124,10 +131,12 @@ LocalRoadPlane VehicleFramework::road_plane(const Mat3& rot, const Vector& y, co
   const Vec3 r = rigid_[k / 2] ? rigid_wheel_point(rigid_geometry_[k / 2], i % 2,
                                                    y(6 + 2 * (i / 2)), y(7 + 2 * (i / 2)))
                                      .centre_m
-                               : wheel_centre(i, y(6 + i));
+                 : twisted(i) ? rear_wheel_pose(i, y).centre_m
+                              : wheel_centre(i, y(6 + i));
   const Vec3 velocity = rot * (z.segment<3>(0) + z.segment<3>(3).cross(r));  // road frame
   const Vec3 centre = y.head<3>() + rot * r + lookahead_s * velocity;
-  const Vec3 spin = rot * work_.wheels[k].spin_axis;
+  const Vec3 spin =
+      rot * (twisted(i) ? rear_wheel_pose(i, y).spin_axis : work_.wheels[k].spin_axis);
   const Vec3 heading = spin.cross(Vec3::UnitZ()).normalized();
   const Vec3 down = spin.cross(heading);  // in the wheel plane, at right angles to the heading
   const double r0 = p_.axles[k / 2].tire.tmeasy.radius_unloaded_m;
@@ -197,6 +206,10 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
       rigid_wheel_applied(i, rot, y, z, g, ft, tr, q);
       continue;
     }
+    if (twisted(i)) {
+      rear_wheel_applied(i, rot, y, z, g, ft, tr, q);
+      continue;
+    }
     const double sd = z(6 + i);
     const Vec3 r = wheel_centre(i, y(6 + i));
     const Vec3 es = hub_axis(i);
@@ -216,6 +229,7 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
         q.segment<2>(6 + 2 * a) += axle_suspension_forces(a, y, z).q;
     }
   }
+  if (twist_ >= 0) frame_applied(y, z, g, ft, tr, q);
   q.segment<3>(0) = ft;
   q.segment<3>(3) = tr;
   if (free_bodies_) free_bodies_->add_chassis_load(rigid_pose(y, z), q.head<6>());
@@ -319,8 +333,13 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
       continue;
     }
     suspension_jacobians(i, y, z, dq_dy, dq_dz);
+    if (twisted(i)) {
+      rear_tire_jacobians(i, rot, e_inv, y, z, dq_dy, dq_dz);
+      continue;
+    }
     tire_jacobians(i, rot, e_inv, y, z, dq_dy, dq_dz);
   }
+  if (twist_ >= 0) frame_jacobians(dq_dy, dq_dz);
   if (free_bodies_) free_body_jacobians(y, z, rot, e_inv, dq_dy, dq_dz);
   return true;
 }

@@ -9,11 +9,14 @@
 /// diag(K_BB, I) with K_BB inverted analytically. Speeds are ordered body first, then axle by axle,
 /// so that M_VI has the zero blocks of eqs. (30-31) (ArrowheadFactorization). A rigid axle
 /// (rigid_axle.h) takes its two slots as heave and roll of the axle body: the same 2 x 2 leaf.
+/// With [frame] (frame/frame_torsion.h) one more coordinate, stored last: the frame's twist, in
+/// the body's corner of the arrowhead (ArrowheadPartition::body_tail_size).
 
 #include <array>
 
 #include "model/road/road.h"
 #include "model/solver/mechanical_block.h"
+#include "model/vehicle/frame/frame_torsion.h"
 #include "model/vehicle/load_sharing.h"
 #include "model/vehicle/rigid_axle.h"
 #include "model/vehicle/vehicle_state.h"
@@ -99,6 +102,14 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   void set_axle_suspension(int axle, const AxleSuspension& element) noexcept {
     suspension_[static_cast<std::size_t>(axle)] = &element;
   }
+  /// Frame torsion (frame/frame_torsion.h): the twist's index in y and z (-1: no [frame]), is
+  /// axle a behind the split, the frame's geometry, the moment it transmits at (y, z) [N m].
+  [[nodiscard]] Eigen::Index twist_index() const noexcept { return twist_; }
+  [[nodiscard]] bool on_rear_part(int axle) const noexcept {
+    return rear_[static_cast<std::size_t>(axle)];
+  }
+  [[nodiscard]] const FrameGeometry& frame() const noexcept { return frame_; }
+  [[nodiscard]] double torsion_moment_nm(const Vector& y, const Vector& z) const noexcept;
   /// The suspension forces of rigid axle a at (y, z).
   [[nodiscard]] AxleSuspensionForces axle_suspension_forces(int axle, const Vector& y,
                                                             const Vector& z) const noexcept;
@@ -137,6 +148,31 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   void rigid_suspension_jacobians(int axle, const Vector& y, const Vector& z, Matrix& dq_dy,
                                   Matrix& dq_dz) const noexcept;
 
+  // frame torsion (vehicle_framework_frame.cpp)
+  struct RearWheelPose {
+    Vec3 centre_m;    ///< the wheel centre, twisted with the rear part
+    Vec3 hub_axis;    ///< Rx(theta) e_s
+    Vec3 d_dtwist_m;  ///< e_x x (centre - a)
+    Vec3 spin_axis;   ///< Rx(theta) times eq. (29)'s
+  };
+  void setup_frame();
+  [[nodiscard]] RearWheelPose rear_wheel_pose(int i, const Vector& y) const noexcept;
+  void frame_mass_matrix(const Vector& y, Matrix& m) const noexcept;
+  void rear_wheel_mass_matrix(int i, const Vector& y, Matrix& m) const noexcept;
+  [[nodiscard]] WheelContact rear_wheel_contact(const Mat3& rot, const Vector& y, const Vector& z,
+                                                int i) const noexcept;
+  void rear_wheel_applied(int i, const Mat3& rot, const Vector& y, const Vector& z, const Vec3& g,
+                          Vec3& ft, Vec3& tr, Vector& q) const noexcept;
+  void frame_applied(const Vector& y, const Vector& z, const Vec3& g, Vec3& ft, Vec3& tr,
+                     Vector& q) const noexcept;
+  void rear_tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv, const Vector& y,
+                           const Vector& z, Matrix& dq_dy, Matrix& dq_dz) const noexcept;
+  void frame_jacobians(Matrix& dq_dy, Matrix& dq_dz) const noexcept;
+  /// Is independent wheel i on the frame's rear part?
+  [[nodiscard]] bool twisted(int i) const noexcept {
+    return twist_ >= 0 && rear_[static_cast<std::size_t>(i / 2)];
+  }
+
   void free_body_jacobians(const Vector& y, const Vector& z, const Mat3& rot, const Mat3& e,
                            Matrix& dq_dy, Matrix& dq_dz) const noexcept;
 
@@ -159,6 +195,9 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   std::array<SpringDamperAxleSuspension, kMaxAxles> default_suspension_{};
   std::array<const AxleSuspension*, kMaxAxles> suspension_{};
   bool any_rigid_ = false;
+  FrameGeometry frame_{};
+  Eigen::Index twist_ = -1;
+  std::array<bool, kMaxAxles> rear_{};
   Mat3 inertia_;
   double total_mass_kg_ = 0;
   double support_load_n_ = 0;

@@ -135,6 +135,13 @@ void VehicleModel::write_outputs(Signals& s) const noexcept {
 void VehicleModel::fill_report(ModelReport& report) const noexcept {
   vehicle::fill_report(state_, inputs_, work_, report);
   fill_free_body_report(p_, state_, report);
+  const VehicleFramework& f = blocks_->framework();
+  if (f.twist_index() >= 0) {  // frame torsion (frame/frame_torsion.h)
+    UnitReport& u = report.units[0];
+    u.frame_twist_rad = state_.framework_y(f.twist_index());
+    u.frame_twist_rate_radps = state_.framework_z(f.twist_index());
+    u.frame_torsion_moment_nm = f.torsion_moment_nm(state_.framework_y, state_.framework_z);
+  }
   mark_slip_validity(p_.slip_mask_speed_mps, report.units[0]);
 }
 

@@ -12,6 +12,7 @@
 #include "model/road/road.h"
 #include "model/tire/tmeasy_params.h"
 #include "model/vehicle/differential/differential_params.h"
+#include "model/vehicle/frame/frame_params.h"
 #include "model/vehicle/free_body/free_body_params.h"
 
 namespace rig::model::vehicle {
@@ -318,6 +319,8 @@ struct VehicleParams {
   FaultLimits fault_limits{};
   /// Generic free bodies on mounts (`[[free_body]]`, model/vehicle/free_body); none by default.
   std::vector<FreeBodyParams> free_bodies;
+  /// Frame torsion (`[frame]`, model/vehicle/frame); not enabled by default.
+  FrameParams frame{};
 };
 
 }  // namespace rig::model::vehicle

@@ -6,7 +6,8 @@ namespace rig::model::vehicle {
 
 VehicleState make_state(const VehicleParams& params, int driven_wheel_count) {
   VehicleState s;
-  const Eigen::Index n = 6 + 2 * static_cast<Eigen::Index>(params.axles.size());
+  const Eigen::Index n = 6 + 2 * static_cast<Eigen::Index>(params.axles.size()) +
+                         (params.frame.enabled ? 1 : 0);  // + the frame's twist, stored last
   s.framework_y = Eigen::VectorXd::Zero(n);
   s.framework_z = Eigen::VectorXd::Zero(n);
   s.shaft_twist_rad = Eigen::VectorXd::Zero(driven_wheel_count);

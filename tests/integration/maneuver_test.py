@@ -854,6 +854,38 @@ def case_sine_steer_tractor_cab(s, rows):
     check(-0.105 < min(seat) and max(seat) < -0.09, "seat near its static sag 97 mm")
 
 
+# ---- issue 17 item 5: frame torsion (model/vehicle/README.md "Frame torsion")
+def case_circle_tractor_frame(s, rows):
+    veh = vehicle_file(config_path(NAME))
+    frame = veh["frame"]
+    late = [r for r in rows if r["sim_time_s"] >= 15.0]
+    ay = sum(r["unit0_ay_mps2"] for r in late) / len(late)
+    check(2.2 < ay < 2.8, f"steady a_y {ay:.3f} m/s^2 (10 m/s on R = 40 m)")
+    for r in late[::500]:
+        moment = (frame["torsion_stiffness_nmprad"] * r["unit0_frame_twist_rad"] +
+                  frame["torsion_damping_nmsprad"] * r["unit0_frame_twist_rate_radps"])
+        check(abs(r["unit0_frame_torsion_moment_nm"] - moment) <= 1e-9 * abs(moment),
+              f"torsion moment = k twist + c rate ({moment:.1f} N m)")
+    twist = sum(r["unit0_frame_twist_rad"] for r in late) / len(late)
+    # the front part (cab, engine on the soft front axle) rolls more than the rear: twist < 0
+    check(-0.03 < twist < -0.005, f"steady twist {twist:.5f} rad")
+
+    def roll_stiffness(a):  # the axle's suspension in series with its tires
+        t2 = a["track_m"] ** 2
+        susp = t2 * (0.5 * a["spring_stiffness_npm"] + a["anti_roll_stiffness_npm"])
+        tire = 0.5 * veh["tires"][a["tire"]]["vertical_stiffness_npm"] * t2
+        return susp * tire / (susp + tire)
+    c = [roll_stiffness(a) for a in veh["axle"]]
+    rigid_share = c[0] / sum(c)  # a rigid chassis shares its roll moment by roll stiffness
+    moments = []
+    for a, axle in enumerate(veh["axle"]):
+        dl = sum(r[f"wheel{2 * a + 1}_load_n"] - r[f"wheel{2 * a}_load_n"] for r in late) / len(late)
+        moments.append(0.5 * dl * axle["track_m"])
+    share = moments[0] / sum(moments)
+    print(f"front axle's share of the roll moment {share:.3f} (rigid chassis {rigid_share:.3f})")
+    check(share > rigid_share + 0.15, "the soft frame keeps the front part's roll moment at the front")
+
+
 case = globals().get("case_" + NAME.replace("-", "_"))  # combination-x-y: case_combination_x_y
 if case is None:
     fail(f"no physical check for {NAME}: add case_{NAME.replace('-', '_')} to {__file__}")

@@ -163,6 +163,26 @@ TEST(ArrowheadFactorization, VehiclePartitionSolvesLikeDenseLu) {
   }
 }
 
+// A body tail (body speeds stored after the leaves, the vehicle's frame twist): coupled to the
+// body and to every leaf, it is factorized with the body; the leaves' mutual blocks are ignored.
+TEST(ArrowheadFactorization, BodyTailSolvesLikeDenseLu) {
+  for (const ArrowheadPartition& p :
+       {ArrowheadPartition{6, {2, 2, 2}, 1}, ArrowheadPartition{6, {5, 4}, 2}}) {
+    const Eigen::MatrixXd a = random_arrowhead(p, 17);
+    Eigen::MatrixXd with_garbage = a;
+    with_garbage(p.body_size, p.body_size + p.leaf_sizes[0]) = 1e3;  // a leaf-leaf entry
+    ArrowheadFactorization f(p);
+    EXPECT_EQ(f.partition().body_size, p.body_size + p.body_tail_size);
+    f.compute(with_garbage);
+    const Eigen::MatrixXd b = Eigen::MatrixXd::Random(p.total_size(), 3);
+    Eigen::MatrixXd x(p.total_size(), 3);
+    f.solve(b, x);
+    const Eigen::MatrixXd x_dense = a.partialPivLu().solve(b);
+    EXPECT_LT((x - x_dense).norm(), 1e-12 * x_dense.norm()) << p.body_tail_size;
+    EXPECT_LT((a * x - b).norm(), 1e-12 * b.norm()) << p.body_tail_size;
+  }
+}
+
 // A right-hand side that is zero on the leaf rows: the body rows of the full solve equal S^-1 b_B
 // (solve_body), on the fixed-size vehicle path and on the general one.
 TEST(ArrowheadFactorization, BodySolveEqualsBodyRowsOfTheFullSolve) {

@@ -1,0 +1,187 @@
+// The framework's frame torsion (frame/frame_torsion.h): the twist theta, stored last in y and z,
+// is the rear part's roll against the chassis about the torsion axis. The rear part's share of
+// the sprung mass is a point mass at its CG c(theta) plus its roll inertia on omega_x + theta';
+// the independent wheels behind the split are point masses at r(theta) with
+// J_v = [I, -[r]x, Rx(theta) e_s, e_x x (r - a)] and their carriers turn with omega + theta' e_x.
+#include <cmath>
+
+#include "model/tire/tmeasy_tire.h"
+#include "model/tire/vertical_tire_force.h"
+#include "model/vehicle/vehicle_framework.h"
+
+namespace rig::model::vehicle {
+
+void VehicleFramework::setup_frame() {
+  if (!p_.frame.enabled) return;
+  frame_ = frame_geometry(p_.frame, p_.chassis.cg_height_m);
+  twist_ = n_ - 1;
+  for (std::size_t a = 0; a < p_.axles.size(); ++a)
+    rear_[a] = p_.axles[a].position_x_m < frame_.split_x_m;
+}
+
+VehicleFramework::RearWheelPose VehicleFramework::rear_wheel_pose(int i,
+                                                                  const Vector& y) const noexcept {
+  const double theta = y(twist_);
+  const TwistedPoint c = twisted_point(frame_, wheel_centre(i, y(6 + i)), theta);
+  return {c.point_m, twist_rotate(theta, hub_axis(i)), c.d_dtwist_m,
+          twist_rotate(theta, work_.wheels[static_cast<std::size_t>(i)].spin_axis)};
+}
+
+void VehicleFramework::frame_mass_matrix(const Vector& y, Matrix& m) const noexcept {
+  const double mr = frame_.rear_mass_kg;
+  const TwistedPoint c = twisted_point(frame_, frame_.rear_cg_m, y(twist_));
+  // the chassis holds the rear part's mass at its design CG c0: move it to c(theta)
+  const Mat3 rx = skew(c.point_m), rx0 = skew(frame_.rear_cg_m);
+  m.block<3, 3>(0, 3) -= mr * (rx - rx0);
+  m.block<3, 3>(3, 0) += mr * (rx - rx0);
+  m.block<3, 3>(3, 3) += mr * (rx.transpose() * rx - rx0.transpose() * rx0);
+  const Vec3 rot_col =
+      mr * c.point_m.cross(c.d_dtwist_m) + frame_.rear_roll_inertia_kgm2 * Vec3::UnitX();
+  m.block<3, 1>(0, twist_) += mr * c.d_dtwist_m;
+  m.block<1, 3>(twist_, 0) += mr * c.d_dtwist_m.transpose();
+  m.block<3, 1>(3, twist_) += rot_col;
+  m.block<1, 3>(twist_, 3) += rot_col.transpose();
+  m(twist_, twist_) += mr * c.d_dtwist_m.squaredNorm() + frame_.rear_roll_inertia_kgm2;
+}
+
+void VehicleFramework::rear_wheel_mass_matrix(int i, const Vector& y, Matrix& m) const noexcept {
+  const double mw = p_.axles[static_cast<std::size_t>(i / 2)].unsprung_mass_kg;
+  const RearWheelPose w = rear_wheel_pose(i, y);
+  const Mat3 rx = skew(w.centre_m);
+  const Eigen::Index h = 6 + i;
+  // J_v = [I, -[r]x, e_s, g]: M += m J_v^T J_v
+  m.block<3, 3>(0, 0).diagonal().array() += mw;
+  m.block<3, 3>(0, 3) -= mw * rx;
+  m.block<3, 3>(3, 0) += mw * rx;
+  m.block<3, 3>(3, 3) += mw * rx.transpose() * rx;
+  const Vec3* cols[2] = {&w.hub_axis, &w.d_dtwist_m};
+  const Eigen::Index idx[2] = {h, twist_};
+  for (int j = 0; j < 2; ++j) {
+    const Vec3& g = *cols[j];
+    const Vec3 rxg = w.centre_m.cross(g);
+    m.block<3, 1>(0, idx[j]) += mw * g;
+    m.block<1, 3>(idx[j], 0) += mw * g.transpose();
+    m.block<3, 1>(3, idx[j]) += mw * rxg;
+    m.block<1, 3>(idx[j], 3) += mw * rxg.transpose();
+    for (int l = 0; l < 2; ++l) m(idx[j], idx[l]) += mw * g.dot(*cols[l]);
+  }
+}
+
+WheelContact VehicleFramework::rear_wheel_contact(const Mat3& rot, const Vector& y, const Vector& z,
+                                                  int i) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  const RearWheelPose w = rear_wheel_pose(i, y);
+  const double theta_rate = z(twist_);
+  const Vec3 hub_velocity = w.hub_axis * z(6 + i) + w.d_dtwist_m * theta_rate;
+  const double r0 = p_.axles[k / 2].tire.tmeasy.radius_unloaded_m;
+  WheelContact c = road_.is_plane()
+                       ? wheel_contact(road_, rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3),
+                                       w.centre_m, hub_velocity, w.spin_axis, r0)
+                       : wheel_contact(work_.wheels[k].road, rot, y.head<3>(), z.segment<3>(0),
+                                       z.segment<3>(3), w.centre_m, hub_velocity, w.spin_axis, r0);
+  // the carrier turns with the rear part: the twist rate also moves the contact point about
+  // the wheel centre
+  const Vec3 extra = theta_rate * ex_cross(c.lever_m - w.centre_m);
+  c.vx_mps += c.ex.dot(extra);
+  c.vy_mps += c.ey.dot(extra);
+  c.penetration_rate_mps -= c.normal.dot(extra);
+  return c;
+}
+
+void VehicleFramework::rear_wheel_applied(int i, const Mat3& rot, const Vector& y, const Vector& z,
+                                          const Vec3& g, Vec3& ft, Vec3& tr,
+                                          Vector& q) const noexcept {
+  const Vec3 v = z.segment<3>(0), w = z.segment<3>(3);
+  const RearWheelPose pose = rear_wheel_pose(i, y);
+  const Vec3& r = pose.centre_m;
+  const double sd = z(6 + i), td = z(twist_);
+  const Vec3 rel = pose.hub_axis * sd + pose.d_dtwist_m * td;
+  // transport, Coriolis, the twist's Coriolis on the hub rate and its centripetal term
+  const Vec3 a0 = w.cross(v) + w.cross(w.cross(r)) + 2.0 * w.cross(rel) +
+                  2.0 * td * ex_cross(pose.hub_axis * sd) + td * td * ex_cross(pose.d_dtwist_m);
+  const CarrierLoad l = carrier_load(i, rot, y, z, g, r, a0);
+  const Vec3& f = l.force_n;
+  const Vec3& s = l.contact.spin_axis;
+  ft += f;
+  const Vec3 m_carrier =
+      l.contact_moment_nm - l.contact_moment_nm.dot(s) * s - l.spin_torque_nm * s;
+  tr += r.cross(f) + m_carrier;
+  q(6 + i) = pose.hub_axis.dot(f) - l.tire.suspension_n;
+  q(twist_) += pose.d_dtwist_m.dot(f) + m_carrier.x();
+}
+
+void VehicleFramework::frame_applied(const Vector& y, const Vector& z, const Vec3& g, Vec3& ft,
+                                     Vec3& tr, Vector& q) const noexcept {
+  const Vec3 v = z.segment<3>(0), w = z.segment<3>(3);
+  const double mr = frame_.rear_mass_kg, td = z(twist_);
+  const Vec3& c0 = frame_.rear_cg_m;
+  const TwistedPoint c = twisted_point(frame_, c0, y(twist_));
+  // the rear part's point mass at c(theta) instead of the chassis' c0 (same terms at theta = 0)
+  const Vec3 a0 = w.cross(v) + w.cross(w.cross(c.point_m)) + 2.0 * td * w.cross(c.d_dtwist_m) +
+                  td * td * ex_cross(c.d_dtwist_m);
+  const Vec3 f = mr * (g - a0);
+  const Vec3 f0 = mr * (g - w.cross(v) - w.cross(w.cross(c0)));
+  ft += f - f0;
+  tr += c.point_m.cross(f) - c0.cross(f0);
+  q(twist_) += c.d_dtwist_m.dot(f) - vehicle::torsion_moment_nm(frame_, y(twist_), td);
+}
+
+void VehicleFramework::rear_tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv,
+                                           const Vector& y, const Vector& z, Matrix& dq_dy,
+                                           Matrix& dq_dz) const noexcept {
+  // as tire_jacobians, with the twist column: on it the contact force's moment about the
+  // torsion axis, e_x . ((contact - a) x u) = (e_x x (contact - a)) . u
+  const auto k = static_cast<std::size_t>(i);
+  const tire::TmeasyParams& t = p_.axles[k / 2].tire.tmeasy;
+  const Eigen::Index h = 6 + i;
+  const WheelContact c = contact(rot, y, z, i);
+  if (c.penetration_m <= 0) return;
+  const RearWheelPose pose = rear_wheel_pose(i, y);
+  const Vec3 twist_col = pose.d_dtwist_m + ex_cross(c.lever_m - pose.centre_m);
+  const tire::TireCharacteristic& ch = work_.wheels[k].tire.characteristic;
+  const tire::TireKinematics kin = tire_kinematics(c, i);
+  const tire::TireSlip slip = tire::slip_of(ch, kin, t.velocity_floor_mps);
+  const tire::DampingPaths paths = tire::damping_paths(t, ch, kin, slip.f_per_slip);
+  const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};
+  const double damp[3] = {t.vertical_damping_nspm, paths.long_nspm, paths.lat_nspm};
+  using Row8 = Eigen::Matrix<double, 8, 1>;
+  using Block8 = Eigen::Matrix<double, 8, 8>;
+  Block8 dz_block = Block8::Zero();
+  Block8 dy_block;
+  for (int d = 0; d < 3; ++d) {
+    const Vec3& u = *dirs[d];
+    Row8 a, b;
+    a << u, pose.centre_m.cross(u), pose.hub_axis.dot(u), twist_col.dot(u);
+    b << u, c.lever_m.cross(u), pose.hub_axis.dot(u), twist_col.dot(u);
+    dz_block.noalias() -= (damp[d] * a) * b.transpose();
+    if (d == 0) {
+      Row8 bk;  // d pen / d y = -n^T J_P K (K = 1 on the hub and the twist)
+      bk << rot * b.segment<3>(0), e_inv.transpose() * b.segment<3>(3), b(6), b(7);
+      dy_block.noalias() = (-t.vertical_stiffness_npm * a) * bk.transpose();
+    }
+  }
+  const Eigen::Index tw = twist_;
+  const auto scatter = [h, tw](const Block8& blk, Matrix& m) {
+    const Eigen::Index idx[2] = {h, tw};
+    m.topLeftCorner<6, 6>() += blk.topLeftCorner<6, 6>();
+    for (int j = 0; j < 2; ++j) {
+      m.block<6, 1>(0, idx[j]) += blk.block<6, 1>(0, 6 + j);
+      m.block<1, 6>(idx[j], 0) += blk.block<1, 6>(6 + j, 0);
+      for (int l = 0; l < 2; ++l) m(idx[j], idx[l]) += blk(6 + j, 6 + l);
+    }
+  };
+  scatter(dz_block, dq_dz);
+  scatter(dy_block, dq_dy);
+}
+
+void VehicleFramework::frame_jacobians(Matrix& dq_dy, Matrix& dq_dz) const noexcept {
+  // the frame's spring-damper on the twist (a relative coordinate: on theta only)
+  dq_dy(twist_, twist_) -= frame_.stiffness_nmprad;
+  dq_dz(twist_, twist_) -= frame_.damping_nmsprad;
+}
+
+double VehicleFramework::torsion_moment_nm(const Vector& y, const Vector& z) const noexcept {
+  return twist_ < 0 ? 0.0 : vehicle::torsion_moment_nm(frame_, y(twist_), z(twist_));
+}
+
+}  // namespace rig::model::vehicle
