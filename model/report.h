@@ -45,6 +45,16 @@ struct WheelReport {
   /// against the body, alike for both its wheels; 0 on an independent axle.
   double axle_heave_m = 0;
   double axle_roll_rad = 0;
+  /// A rigid axle on leaf springs (model/vehicle/leaf_axle.h), else 0: the axle's wind-up
+  /// (pitch against the frame, about +y) and fore-aft travel from rest (alike for both wheels);
+  /// this side's leaf: shackle angle from the vertical, its eye links' directions (front A-E,
+  /// rear B-R, rad from +x towards +z), Newton iterations in the step's balance.
+  double leaf_windup_rad = 0;
+  double leaf_fore_aft_m = 0;
+  double leaf_shackle_rad = 0;
+  double leaf_front_link_rad = 0;
+  double leaf_rear_link_rad = 0;
+  double leaf_iterations = 0;
   /// 1: slip_x, slip_y mean a slip (the wheel moves at least slip_mask_speed_mps); 0: stand-still
   /// or creeping, the raw values are kept but are not slips an ECU should act on
   std::int8_t slip_valid = 1;

@@ -9,7 +9,9 @@
 #include "io/config/differential_config.h"
 #include "io/config/frame_config.h"
 #include "io/config/free_body_config.h"
+#include "io/config/leaf_spring_config.h"
 #include "model/report.h"
+#include "model/vehicle/leaf_axle_state.h"
 #include "model/vehicle/rigid_axle.h"
 
 namespace rig::io::config {
@@ -220,6 +222,21 @@ void read_rigid_axle(StrictTable t, AxleParams& a) {
   t.finish();
 }
 
+/// [axle.leaf_spring] of a rigid axle (model/vehicle/leaf_axle.h): the leaves are its springs,
+/// at [axle.rigid]'s spring_track_m (which the leaf table's must match).
+void read_leaf_axle(StrictTable& t, AxleParams& a) {
+  const std::optional<LeafSpringConfig> leaf = read_axle_leaf_spring(t);
+  if (!leaf) return;
+  if (std::abs(leaf->spring_track_m - a.rigid.spring_track_m) > 1e-3)
+    throw t.error("leaf_spring",
+                  "[axle.leaf_spring] spring_track_m = " + std::to_string(leaf->spring_track_m) +
+                      " m differs from [axle.rigid] spring_track_m = " +
+                      std::to_string(a.rigid.spring_track_m) +
+                      " m (the leaves are the axle's springs)");
+  a.has_leaf_spring = true;
+  a.leaf_spring = leaf->params;
+}
+
 AxleParams read_axle(StrictTable t, const std::map<std::string, TireParams>& tires) {
   AxleParams a;
   a.position_x_m = t.number_in("position_x_m", -20, 20);
@@ -237,8 +254,11 @@ AxleParams read_axle(StrictTable t, const std::map<std::string, TireParams>& tir
     read_rigid_axle(t.table("rigid"), a);
     a.unsprung_mass_kg = 0.5 * a.rigid.mass_kg;  // each wheel's point mass (rigid_axle.h)
     a.anti_roll_stiffness_npm = 0;
+    read_leaf_axle(t, a);
   } else {
     if (t.has("rigid")) throw t.error("rigid", "[axle.rigid] needs kind = \"rigid\"");
+    if (t.has("leaf_spring"))
+      throw t.error("leaf_spring", "[axle.leaf_spring] needs kind = \"rigid\"");
     a.unsprung_mass_kg = t.number_in("unsprung_mass_kg", 1, 5000);
   }
   a.spring_stiffness_npm = t.number_in("spring_stiffness_npm", 1e2, 1e8);
@@ -540,6 +560,13 @@ VehicleParams load_vehicle_file(const std::filesystem::path& file,
   }
   if (p.axles.empty() || p.axles.size() > static_cast<std::size_t>(model::kMaxWheelsPerUnit / 2)) {
     throw t.error("axle", "needs 1 to 6 [[axle]] tables");
+  }
+  int leaf_axles = 0;
+  for (std::size_t i = 0; i < p.axles.size(); ++i) {
+    if (p.axles[i].has_leaf_spring && ++leaf_axles > model::vehicle::kMaxLeafAxles)
+      throw axle_tables[i].error(
+          "leaf_spring",
+          "at most " + std::to_string(model::vehicle::kMaxLeafAxles) + " axles on leaf springs");
   }
   check_axle_order(axle_tables, p.axles);
   read_bogies(t, p);

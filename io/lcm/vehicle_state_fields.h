@@ -101,6 +101,18 @@ struct VehicleStateFields {
       {"wheel_axle_heave_m", "m", member<&W::axle_heave_m>, &S::wheel_axle_heave_m, "axle_heave_m"},
       {"wheel_axle_roll_rad", "rad", member<&W::axle_roll_rad>, &S::wheel_axle_roll_rad,
        "axle_roll_rad"},
+      {"wheel_leaf_windup_rad", "rad", member<&W::leaf_windup_rad>, &S::wheel_leaf_windup_rad,
+       "leaf_windup_rad"},
+      {"wheel_leaf_fore_aft_m", "m", member<&W::leaf_fore_aft_m>, &S::wheel_leaf_fore_aft_m,
+       "leaf_fore_aft_m"},
+      {"wheel_leaf_shackle_rad", "rad", member<&W::leaf_shackle_rad>, &S::wheel_leaf_shackle_rad,
+       "leaf_shackle_rad"},
+      {"wheel_leaf_front_link_rad", "rad", member<&W::leaf_front_link_rad>,
+       &S::wheel_leaf_front_link_rad, "leaf_front_link_rad"},
+      {"wheel_leaf_rear_link_rad", "rad", member<&W::leaf_rear_link_rad>,
+       &S::wheel_leaf_rear_link_rad, "leaf_rear_link_rad"},
+      {"wheel_leaf_iterations", "1", member<&W::leaf_iterations>, &S::wheel_leaf_iterations,
+       "leaf_iterations"},
   };
 
   /// Per wheel, flags: 1 valid, 0 not.

@@ -89,6 +89,15 @@ struct AxleSuspensionForces {
   std::array<double, 2> spring_n{};                 ///< left, right; compression +
 };
 
+/// What the axle housing takes from its wheels beyond heave and roll, body axes at the axle
+/// centre (the wheel centres' line): the fore-aft force (tires, the wheels' gravity and
+/// inertia) and the pitch moment about +y (the brake torques, whose calipers sit on the housing,
+/// and the drive torque's reaction on a live axle).
+struct AxleHousingLoad {
+  double force_x_n = 0;
+  double moment_y_nm = 0;
+};
+
 /// The seam for the suspension elements of a rigid axle (springs, dampers, stops, bar today; the
 /// five-link leaf spring of sec. 2.3 as a generalized force element tomorrow): everything that
 /// acts between the axle and the body, as generalized forces on the axle's coordinates. Called
@@ -104,6 +113,16 @@ class AxleSuspension {
   virtual ~AxleSuspension() = default;
   virtual void forces(double heave_m, double roll_rad, double heave_rate_mps,
                       double roll_rate_radps, AxleSuspensionForces& out) const noexcept = 0;
+  /// The same, told what the axle housing takes beyond heave and roll (its fore-aft force and
+  /// pitch moment, which the framework passes to the body): elements that guide the axle
+  /// fore-aft and in pitch (the leaf spring) find their deflection from it. Called once per
+  /// applied-forces evaluation; the default ignores the load.
+  virtual void forces_under_load(double heave_m, double roll_rad, double heave_rate_mps,
+                                 double roll_rate_radps, const AxleHousingLoad& load,
+                                 AxleSuspensionForces& out) const noexcept {
+    (void)load;
+    forces(heave_m, roll_rad, heave_rate_mps, roll_rate_radps, out);
+  }
 };
 
 /// Two preloaded springs at +-spring_track/2 (wheel-rate keys of the axle: spring_stiffness_npm

@@ -1,6 +1,8 @@
 #include "model/vehicle/vehicle_blocks.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "model/tire/vertical_tire_force.h"
 #include "model/vehicle/steering/rack_in_the_loop.h"
@@ -106,6 +108,18 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
   if (std::any_of(p.axles.begin(), p.axles.end(), [](const AxleParams& a) { return a.steered; }))
     sequence_.add_stage(*steering_stage_);
   sequence_.add_stage(wheel_stage_);
+  // rigid axles on leaf springs: the leaves replace the springs behind the axle's seam
+  for (std::size_t a = 0; a < p.axles.size(); ++a) {
+    if (!p.axles[a].has_leaf_spring) continue;
+    if (leaf_axles_.size() >= static_cast<std::size_t>(kMaxLeafAxles))
+      throw std::invalid_argument("vehicle: at most " + std::to_string(kMaxLeafAxles) +
+                                  " axles on leaf springs");
+    const int i = 2 * static_cast<int>(a);
+    leaf_axles_.push_back(std::make_unique<LeafAxleSuspension>(
+        static_cast<int>(a), p.axles[a], framework_.preload_n(i), framework_.preload_n(i + 1),
+        state.leaf_axles[leaf_axles_.size()]));
+    framework_.set_axle_suspension(static_cast<int>(a), *leaf_axles_.back());
+  }
   // free bodies (subsystems of eq. 2 at the chassis' y_V(k)); their mounts act on the framework
   if (!p.free_bodies.empty()) {
     free_bodies_ = std::make_unique<FreeBodies>(p, framework_.road(), state, work);

@@ -20,6 +20,7 @@
 #include "model/vehicle/drivetrain.h"
 #include "model/vehicle/free_body/free_bodies.h"
 #include "model/vehicle/half_shafts.h"
+#include "model/vehicle/leaf_axle.h"
 #include "model/vehicle/steering/column_steering.h"
 #include "model/vehicle/steering/enhanced_steering.h"
 #include "model/vehicle/steering/simple_steering.h"
@@ -72,6 +73,15 @@ class VehicleBlocks {
   [[nodiscard]] const Drivetrain& drivetrain() const noexcept { return drivetrain_; }
   /// The free bodies (`[[free_body]]`); null without any.
   [[nodiscard]] FreeBodies* free_bodies() noexcept { return free_bodies_.get(); }
+  /// The leaf-sprung rigid axles' elements (leaf_axle.h), in axle order; a reset puts each
+  /// one's state at rest.
+  [[nodiscard]] const std::vector<std::unique_ptr<LeafAxleSuspension>>& leaf_axles()
+      const noexcept {
+    return leaf_axles_;
+  }
+  void place_leaf_axles_at_rest() const noexcept {
+    for (const auto& l : leaf_axles_) l->place_at_rest();
+  }
   /// The framework's stepper: M_VI and q of the step (for the force-coupled combination).
   [[nodiscard]] const solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization>&
   framework_stepper() const noexcept {
@@ -98,8 +108,9 @@ class VehicleBlocks {
   std::vector<std::unique_ptr<solver::ForceElementStepper<2>>> tire_steppers_;
   std::unique_ptr<solver::ForceElementStepper<Eigen::Dynamic>> shaft_stepper_;
   solver::MechanicalStepper<2> drivetrain_stepper_;
-  std::unique_ptr<solver::Stage> steering_stage_;  ///< the stepper of one of the two
-  std::unique_ptr<FreeBodies> free_bodies_;        ///< none without [[free_body]]
+  std::unique_ptr<solver::Stage> steering_stage_;                ///< the stepper of one of the two
+  std::unique_ptr<FreeBodies> free_bodies_;                      ///< none without [[free_body]]
+  std::vector<std::unique_ptr<LeafAxleSuspension>> leaf_axles_;  ///< [axle.leaf_spring]
   solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization> framework_stepper_;
   solver::SequentialStepper sequence_;
 };

@@ -200,10 +200,11 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
   Vec3 ft = mc * (g - w.cross(v));
   ft.x() -= 0.5 * p_.chassis.air_density_kgpm3 * p_.chassis.drag_area_m2 * v.x() * std::abs(v.x());
   Vec3 tr = -w.cross(inertia_ * w);
+  std::array<AxleHousingLoad, kMaxAxles> housing{};  // rigid axles: what their housings take
   for (int i = 0; i < wheel_count_; ++i) {
     const auto k = static_cast<std::size_t>(i);
     if (rigid_[k / 2]) {
-      rigid_wheel_applied(i, rot, y, z, g, ft, tr, q);
+      rigid_wheel_applied(i, rot, y, z, g, ft, tr, q, housing[k / 2]);
       continue;
     }
     if (twisted(i)) {
@@ -226,7 +227,8 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
   if (any_rigid_) {
     for (int a = 0; a < wheel_count_ / 2; ++a) {
       if (rigid_[static_cast<std::size_t>(a)])
-        q.segment<2>(6 + 2 * a) += axle_suspension_forces(a, y, z).q;
+        q.segment<2>(6 + 2 * a) +=
+            axle_suspension_forces(a, y, z, housing[static_cast<std::size_t>(a)]).q;
     }
   }
   if (twist_ >= 0) frame_applied(y, z, g, ft, tr, q);

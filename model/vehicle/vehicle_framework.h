@@ -113,6 +113,9 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   /// The suspension forces of rigid axle a at (y, z).
   [[nodiscard]] AxleSuspensionForces axle_suspension_forces(int axle, const Vector& y,
                                                             const Vector& z) const noexcept;
+  /// The same, the housing's load given (AxleSuspension::forces_under_load): what q takes.
+  [[nodiscard]] AxleSuspensionForces axle_suspension_forces(
+      int axle, const Vector& y, const Vector& z, const AxleHousingLoad& housing) const noexcept;
 
  private:
   /// What the tire of wheel i sees at contact c (spin of the state, r_D from the penetration).
@@ -141,8 +144,9 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   void rigid_mass_matrix(int axle, const Vector& y, Matrix& m) const noexcept;
   /// Wheel i's forces (inertia, gravity, tire, torques) on the body (force, moment about the
   /// CG: added to ft, tr) and on its axle's heave and roll (added to q).
+  /// And the housing's fore-aft force and pitch moment (added to `housing`).
   void rigid_wheel_applied(int i, const Mat3& rot, const Vector& y, const Vector& z, const Vec3& g,
-                           Vec3& ft, Vec3& tr, Vector& q) const noexcept;
+                           Vec3& ft, Vec3& tr, Vector& q, AxleHousingLoad& housing) const noexcept;
   void rigid_tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv, const Vector& y,
                             const Vector& z, Matrix& dq_dy, Matrix& dq_dz) const noexcept;
   void rigid_suspension_jacobians(int axle, const Vector& y, const Vector& z, Matrix& dq_dy,

@@ -36,6 +36,15 @@ AxleSuspensionForces VehicleFramework::axle_suspension_forces(int axle, const Ve
   return f;
 }
 
+AxleSuspensionForces VehicleFramework::axle_suspension_forces(
+    int axle, const Vector& y, const Vector& z, const AxleHousingLoad& housing) const noexcept {
+  const Eigen::Index h = 6 + 2 * static_cast<Eigen::Index>(axle);
+  AxleSuspensionForces f;
+  suspension_[static_cast<std::size_t>(axle)]->forces_under_load(y(h), y(h + 1), z(h), z(h + 1),
+                                                                 housing, f);
+  return f;
+}
+
 WheelContact VehicleFramework::rigid_contact(const Mat3& rot, const Vector& y, const Vector& z,
                                              int i) const noexcept {
   const auto k = static_cast<std::size_t>(i);
@@ -88,8 +97,8 @@ void VehicleFramework::rigid_mass_matrix(int axle, const Vector& y, Matrix& m) c
 }
 
 void VehicleFramework::rigid_wheel_applied(int i, const Mat3& rot, const Vector& y, const Vector& z,
-                                           const Vec3& g, Vec3& ft, Vec3& tr,
-                                           Vector& q) const noexcept {
+                                           const Vec3& g, Vec3& ft, Vec3& tr, Vector& q,
+                                           AxleHousingLoad& housing) const noexcept {
   const auto k = static_cast<std::size_t>(i);
   const Eigen::Index h = 6 + 2 * (i / 2);
   const Vec3 v = z.segment<3>(0), w = z.segment<3>(3);
@@ -111,6 +120,11 @@ void VehicleFramework::rigid_wheel_applied(int i, const Mat3& rot, const Vector&
   tr += r.cross(f) + m_carrier;
   q(h) += f.z();
   q(h + 1) += pt.d_droll_m.dot(f) + m_carrier.x();
+  // the housing's fore-aft load: f holds the transport terms of the wheel's inertia (a0), not
+  // its share of the body's own dv/dt (in M): that from the last step's acceleration
+  const double dvdt_x = state_.acceleration_mps2.x() - w.cross(v).x();
+  housing.force_x_n += f.x() - mw * dvdt_x;
+  housing.moment_y_nm += m_carrier.y();
 }
 
 void VehicleFramework::rigid_suspension_jacobians(int axle, const Vector& y, const Vector& z,

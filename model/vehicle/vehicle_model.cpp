@@ -33,6 +33,7 @@ VehicleModel::~VehicleModel() = default;
 
 void VehicleModel::reset(double x_m, double y_m, double yaw_rad) noexcept {
   place_at_rest(state_, p_, x_m, y_m, yaw_rad);
+  blocks_->place_leaf_axles_at_rest();
   place_on_road(state_, p_, blocks_->framework());  // a surface: its height and slope there
   place_free_bodies(p_, state_);
   work_.wheels.fill(WheelWork{});

@@ -14,6 +14,7 @@
 #include "model/vehicle/differential/differential_params.h"
 #include "model/vehicle/frame/frame_params.h"
 #include "model/vehicle/free_body/free_body_params.h"
+#include "model/vehicle/leaf_spring/leaf_spring_params.h"
 
 namespace rig::model::vehicle {
 
@@ -78,6 +79,11 @@ struct RigidAxleParams {
 struct AxleParams {
   AxleKind kind = AxleKind::kIndependent;
   RigidAxleParams rigid{};  ///< kind == kRigid only
+  /// A rigid axle on five-link leaf springs (`[axle.leaf_spring]`, leaf_axle.h): one leaf each
+  /// side at +-rigid.spring_track_m / 2 instead of the springs (spring_stiffness_npm then only
+  /// weighs the axles in the static loads of more than two axles).
+  bool has_leaf_spring = false;
+  leaf_spring::LeafSpringParams leaf_spring{};
   double position_x_m = 0;  ///< wheel centre x relative to the sprung-mass CG (forward +)
   double track_m = 1.55;
   double unsprung_mass_kg = 40;         ///< per wheel

@@ -128,6 +128,22 @@ void fill_wheel(const VehicleState& state, const VehicleInputs& in, const Vehicl
   r.axle_roll_rad = w.out.axle_roll_rad;
 }
 
+/// The leaf-sprung axles' values on their wheels (the others keep 0).
+void fill_leaf_axles(const VehicleState& state, UnitReport& u) {
+  for (const LeafAxleState& s : state.leaf_axles) {
+    if (s.axle < 0) continue;
+    for (std::size_t side = 0; side < 2; ++side) {
+      WheelReport& r = u.wheels[2 * static_cast<std::size_t>(s.axle) + side];
+      r.leaf_windup_rad = s.pitch_rad - s.rest_pitch_rad;
+      r.leaf_fore_aft_m = s.x_m - s.rest_x_m;
+      r.leaf_shackle_rad = s.leaf[side].shackle_angle_rad();
+      r.leaf_front_link_rad = s.leaf[side].internal(1);
+      r.leaf_rear_link_rad = s.leaf[side].internal(3);
+      r.leaf_iterations = s.iterations[side];
+    }
+  }
+}
+
 }  // namespace
 
 void fill_report(const VehicleState& state, const VehicleInputs& in, const VehicleWorkspace& work,
@@ -147,6 +163,7 @@ void fill_report(const VehicleState& state, const VehicleInputs& in, const Vehic
   u.wheel_count = work.wheel_count;
   for (int i = 0; i < work.wheel_count; ++i)
     fill_wheel(state, in, work, i, u.wheels[static_cast<std::size_t>(i)]);
+  fill_leaf_axles(state, u);
   report.steering.wheel_angle_rad = state.steering_y(0);
   report.steering.wheel_speed_radps = state.steering_z(0);
   report.steering.wheel_torque_nm = in.hand_torque_cmd_nm;

@@ -12,6 +12,7 @@
 
 #include "model/report.h"
 #include "model/vehicle/chassis_kinematics.h"
+#include "model/vehicle/leaf_axle_state.h"
 #include "model/vehicle/vehicle_params.h"
 
 namespace rig::model::vehicle {
@@ -73,6 +74,9 @@ struct VehicleState {
   /// Its torque at the end of the last step [N m] (the enhanced model takes it at the step's
   /// start).
   std::array<double, kMaxWheels> bore_torque_nm{};
+  /// Rigid axles on leaf springs (leaf_axle.h), in axle order: the leaves' warm starts and the
+  /// condensed fore-aft travel and wind-up (set at rest by the axle's element on a reset).
+  std::array<LeafAxleState, kMaxLeafAxles> leaf_axles{};
   /// CG acceleration over the last step, body axes (from z(k+1) - z(k)).
   Vec3 acceleration_mps2 = Vec3::Zero();
 };

@@ -886,6 +886,34 @@ def case_circle_tractor_frame(s, rows):
     check(share > rigid_share + 0.15, "the soft frame keeps the front part's roll moment at the front")
 
 
+def case_braking_van_leaf(s, rows):
+    check(s["stop_reason"] == "event", "the stop event ended the run")
+    ev = {e["name"]: e["time_s"] for e in s["scenario_events"]}
+    # steady braking: 0.5 s after the ramp until 3 m/s
+    steady = [r for r in rows if r["sim_time_s"] > ev["brake"] + 0.5 and r["unit0_vx_mps"] > 3.0]
+    check(len(steady) > 2000, f"{len(steady)} steady braking states")
+    # the deceleration from the brake and drive torques at the rolling radii (minus drag, the
+    # wheels' spin inertia): within 5 % of sum T / (r_D m), m = 3500 kg
+    ax = sum(r["unit0_ax_mps2"] for r in steady) / len(steady)
+    force = sum(sum((r[f"wheel{i}_brake_torque_nm"] + r[f"wheel{i}_drive_torque_nm"]) /
+                    r[f"wheel{i}_rolling_radius_m"] for i in range(4)) for r in steady) / len(steady)
+    check(abs(ax - force / 3500.0) < 0.05 * abs(ax), f"a_x {ax:.2f} m/s^2, sum T/r_D/m {force / 3500:.2f}")
+    # the rear axle winds up nose-down (+ about y) under the brake reaction: at most what the
+    # moment alone gives the FE leaf (43.71 kN m/rad each), at least 60 % of it (the rear's
+    # unloading takes some back; leaf_axle_test compares the superposition within 10 %)
+    for r in steady[::250]:
+        moment = -(r["wheel2_brake_torque_nm"] + r["wheel2_drive_torque_nm"])  # per leaf
+        windup, alone = r["wheel2_leaf_windup_rad"], moment / 43711.8
+        check(0.6 * alone < windup < alone, f"wind-up {windup * 1e3:.2f} mrad, M/k_w {alone * 1e3:.2f}")
+        check(r["wheel2_leaf_windup_rad"] == r["wheel3_leaf_windup_rad"], "one axle: one wind-up")
+        check(abs(r["wheel2_leaf_fore_aft_m"]) < 0.005, "the axle moves mm fore-aft")
+    # the front axle has no leaves; each rear leaf at most 3 evaluations x 4 Newton iterations
+    check(all(r["wheel0_leaf_windup_rad"] == 0 and r["wheel0_leaf_iterations"] == 0 for r in rows),
+          "no leaf on the front axle")
+    most = max(max(r["wheel2_leaf_iterations"], r["wheel3_leaf_iterations"]) for r in rows)
+    check(most <= 12, f"at most {most} leaf Newton iterations per step")
+
+
 case = globals().get("case_" + NAME.replace("-", "_"))  # combination-x-y: case_combination_x_y
 if case is None:
     fail(f"no physical check for {NAME}: add case_{NAME.replace('-', '_')} to {__file__}")
