@@ -2,6 +2,7 @@
 
 #include "rig/vehicle_state_v1_t.hpp"
 #include "rig/vehicle_state_v2_t.hpp"
+#include "rig/vehicle_state_v3_t.hpp"
 
 namespace rig::log2csv {
 
@@ -10,6 +11,7 @@ namespace {
 using State = rig::vehicle_state_t;
 using V1 = rig::vehicle_state_v1_t;
 using V2 = rig::vehicle_state_v2_t;
+using V3 = rig::vehicle_state_v3_t;
 
 bool decode_current(const Event& event, State& msg) {
   return msg.decode(event.data, 0, static_cast<int>(event.size)) >= 0;
@@ -18,7 +20,13 @@ bool decode_current(const Event& event, State& msg) {
 bool has_every_row(std::string_view /*name*/) { return true; }
 
 // ---- v1: before the per-wheel road fields (issue 16); v2: before the differentials (issue
-// 17). The members both share, then v2's road fields. ----
+// 17); v3: before the frame torsion and the leaf springs (issue 17). The members all share,
+// then the later ones'. ----
+
+/// Rows no layout before v4 had.
+bool frame_or_leaf(std::string_view name) {
+  return name.starts_with("unit_frame_") || name.starts_with("wheel_leaf_");
+}
 
 template <typename Legacy>
 void copy_frame_and_units(const Legacy& a, State& b) {
@@ -99,6 +107,24 @@ void copy_vehicle_and_joints(const Legacy& a, State& b) {
   b.joint_rod_force_n = a.joint_rod_force_n;
 }
 
+template <typename Legacy>
+void copy_bodies(const Legacy& a, State& b) {
+  b.num_bodies = a.num_bodies;
+  b.body_x_m = a.body_x_m;
+  b.body_y_m = a.body_y_m;
+  b.body_z_m = a.body_z_m;
+  b.body_roll_rad = a.body_roll_rad;
+  b.body_pitch_rad = a.body_pitch_rad;
+  b.body_yaw_rad = a.body_yaw_rad;
+  b.body_vx_mps = a.body_vx_mps;
+  b.body_vy_mps = a.body_vy_mps;
+  b.body_vz_mps = a.body_vz_mps;
+  b.body_wx_radps = a.body_wx_radps;
+  b.body_wy_radps = a.body_wy_radps;
+  b.body_wz_radps = a.body_wz_radps;
+  b.body_on_stop = a.body_on_stop;
+}
+
 bool decode_v1(const Event& event, State& msg) {
   V1 v1;
   if (v1.decode(event.data, 0, static_cast<int>(event.size)) < 0) return false;
@@ -110,7 +136,7 @@ bool decode_v1(const Event& event, State& msg) {
 
 bool v1_has_row(std::string_view name) {
   return !name.starts_with("wheel_road_") && !name.starts_with("wheel_axle_") &&
-         !name.starts_with("wheel_leaf_") && !name.starts_with("diff_") && name != "num_diffs";
+         !frame_or_leaf(name) && !name.starts_with("diff_") && name != "num_diffs";
 }
 
 bool decode_v2(const Event& event, State& msg) {
@@ -128,15 +154,42 @@ bool decode_v2(const Event& event, State& msg) {
 }
 
 bool v2_has_row(std::string_view name) {
-  return !name.starts_with("wheel_axle_") && !name.starts_with("wheel_leaf_") &&
+  return !name.starts_with("wheel_axle_") && !frame_or_leaf(name) &&
          !name.starts_with("diff_") && name != "num_diffs";
 }
+
+bool decode_v3(const Event& event, State& msg) {
+  V3 v3;
+  if (v3.decode(event.data, 0, static_cast<int>(event.size)) < 0) return false;
+  copy_frame_and_units(v3, msg);
+  copy_wheels(v3, msg);
+  msg.wheel_road_z_m = v3.wheel_road_z_m;
+  msg.wheel_road_normal_x = v3.wheel_road_normal_x;
+  msg.wheel_road_normal_y = v3.wheel_road_normal_y;
+  msg.wheel_road_normal_z = v3.wheel_road_normal_z;
+  msg.wheel_road_mu = v3.wheel_road_mu;
+  msg.wheel_axle_heave_m = v3.wheel_axle_heave_m;
+  msg.wheel_axle_roll_rad = v3.wheel_axle_roll_rad;
+  copy_vehicle_and_joints(v3, msg);
+  msg.num_diffs = v3.num_diffs;
+  msg.diff_input_speed_radps = v3.diff_input_speed_radps;
+  msg.diff_output_a_speed_radps = v3.diff_output_a_speed_radps;
+  msg.diff_output_b_speed_radps = v3.diff_output_b_speed_radps;
+  msg.diff_locked = v3.diff_locked;
+  copy_bodies(v3, msg);
+  return true;
+}
+
+bool v3_has_row(std::string_view name) { return !frame_or_leaf(name); }
 
 constexpr VehicleStateLayout kCurrent{"rig.vehicle_state_t", decode_current, has_every_row};
 constexpr VehicleStateLayout kV1{"rig.vehicle_state_t (v1: before the wheel_road_ fields)",
                                  decode_v1, v1_has_row};
 constexpr VehicleStateLayout kV2{"rig.vehicle_state_t (v2: before the diff_ fields)", decode_v2,
                                  v2_has_row};
+constexpr VehicleStateLayout kV3{
+    "rig.vehicle_state_t (v3: before the unit_frame_ and wheel_leaf_ fields)", decode_v3,
+    v3_has_row};
 
 }  // namespace
 
@@ -145,6 +198,7 @@ const VehicleStateLayout& current_vehicle_state_layout() { return kCurrent; }
 const VehicleStateLayout* legacy_vehicle_state_layout(std::int64_t hash) {
   if (hash == V1::getHash()) return &kV1;
   if (hash == V2::getHash()) return &kV2;
+  if (hash == V3::getHash()) return &kV3;
   return nullptr;
 }
 
