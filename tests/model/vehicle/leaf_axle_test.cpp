@@ -186,8 +186,8 @@ TEST(LeafAxle, AnalyticPartialsMatchFiniteDifferences) {
   LeafAxleState slot;
   const LeafAxleSuspension e(kRear, p.axles[1], 7490.0, 7490.0, slot);
   struct Case {
-    double heave_m, roll_rad, heave_rate_mps, roll_rate_radps;
-    AxleHousingLoad load;
+    double heave_m = 0, roll_rad = 0, heave_rate_mps = 0, roll_rate_radps = 0;
+    AxleHousingLoad load{};
   };
   const Case cases[] = {{0, 0, 0.1, 0, {}},
                         {0.03, 0.02, -0.2, 0.5, {}},
