@@ -96,6 +96,26 @@ TEST(LeafAxle, StaticAxleLoadsMatchTheLeverRule) {
   EXPECT_NEAR(leaf.x_m - leaf.rest_x_m, 0.0, 1e-6);
 }
 
+// The leaves' state is the vehicle's: a reset puts them back at rest, a copy of the state
+// carries them (what a fault's rollback restores).
+TEST(LeafAxle, ResetAndStateCopiesCarryTheLeaves) {
+  VehicleModel m(van(), 1e-3);
+  const LeafAxleState rest = m.state().leaf_axles[0];
+  Signals s = test::all_driver_inputs();
+  m.set_forward_speed(15.0);
+  s[Signal::kBrakePressureRear] = 6e6;
+  for (int k = 0; k < 500; ++k) ASSERT_EQ(m.step(s), StepStatus::kOk);
+  const VehicleState braked = m.state();
+  EXPECT_GT(braked.leaf_axles[0].pitch_rad - rest.pitch_rad, 0.01);  // wound up
+  EXPECT_EQ(braked.leaf_axles[0].leaf[1].internal, m.state().leaf_axles[0].leaf[1].internal);
+  m.reset(0, 0, 0);
+  const LeafAxleState& now = m.state().leaf_axles[0];
+  EXPECT_EQ(now.pitch_rad, rest.pitch_rad);
+  EXPECT_EQ(now.x_m, rest.x_m);
+  EXPECT_EQ(now.leaf[0].internal, rest.leaf[0].internal);
+  EXPECT_EQ(now.q, rest.q);
+}
+
 // The axle's vertical rate per leaf in the vehicle (x and wind-up free: the condensed
 // stiffness, and the secant of the balanced forces over +-1 mm of heave) against the FE beam's
 // free vertical rate at the leaf's static load.
@@ -166,8 +186,8 @@ TEST(LeafAxle, AnalyticPartialsMatchFiniteDifferences) {
   LeafAxleState slot;
   const LeafAxleSuspension e(kRear, p.axles[1], 7490.0, 7490.0, slot);
   struct Case {
-    double heave_m, roll_rad, heave_rate_mps, roll_rate_radps;
-    AxleHousingLoad load;
+    double heave_m = 0, roll_rad = 0, heave_rate_mps = 0, roll_rate_radps = 0;
+    AxleHousingLoad load{};
   };
   const Case cases[] = {{0, 0, 0.1, 0, {}},
                         {0.03, 0.02, -0.2, 0.5, {}},
