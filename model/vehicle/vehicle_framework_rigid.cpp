@@ -123,7 +123,7 @@ void VehicleFramework::rigid_wheel_applied(int i, const Mat3& rot, const Vector&
   // the housing's fore-aft load: f holds the transport terms of the wheel's inertia (a0), not
   // its share of the body's own dv/dt (in M): that from the last step's acceleration
   const double dvdt_x = state_.acceleration_mps2.x() - w.cross(v).x();
-  housing.force_x_n += f.x() - mw * dvdt_x;
+  housing.force_x_n += f.x() - p_.axles[k / 2].unsprung_mass_kg * dvdt_x;
   housing.moment_y_nm += m_carrier.y();
 }
 
