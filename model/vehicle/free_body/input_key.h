@@ -6,7 +6,9 @@
 /// cache hit hands back what the same inputs gave, bit for bit, so results do not change.
 
 #include <array>
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 
 namespace rig::model::vehicle {
@@ -19,7 +21,10 @@ class InputKey {
   /// True if `now` equals the stored inputs bit for bit; otherwise stores them (the caller
   /// then recomputes) and returns false.
   [[nodiscard]] bool hit(const Values& now) noexcept {
-    if (valid_ && std::memcmp(values_.data(), now.data(), sizeof(double) * N) == 0) return true;
+    bool same = valid_;
+    for (std::size_t i = 0; same && i < N; ++i)
+      same = std::bit_cast<std::uint64_t>(values_[i]) == std::bit_cast<std::uint64_t>(now[i]);
+    if (same) return true;
     values_ = now;
     valid_ = true;
     return false;
