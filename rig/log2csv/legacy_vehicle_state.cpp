@@ -110,7 +110,7 @@ bool decode_v1(const Event& event, State& msg) {
 
 bool v1_has_row(std::string_view name) {
   return !name.starts_with("wheel_road_") && !name.starts_with("wheel_axle_") &&
-         !name.starts_with("diff_") && name != "num_diffs";
+         !name.starts_with("diff_") && name != "num_diffs" && !name.starts_with("unit_frame_");
 }
 
 bool decode_v2(const Event& event, State& msg) {
@@ -128,7 +128,8 @@ bool decode_v2(const Event& event, State& msg) {
 }
 
 bool v2_has_row(std::string_view name) {
-  return !name.starts_with("wheel_axle_") && !name.starts_with("diff_") && name != "num_diffs";
+  return !name.starts_with("wheel_axle_") && !name.starts_with("diff_") && name != "num_diffs" &&
+         !name.starts_with("unit_frame_");  // frame torsion (issue 17 item 5)
 }
 
 constexpr VehicleStateLayout kCurrent{"rig.vehicle_state_t", decode_current, has_every_row};

@@ -489,9 +489,9 @@ TEST(VehicleConfig, ManeuverFilesNameTheirVehicleAndRunAtOneMillisecond) {
   // + weave, parking effort (0 and 5 km/h), returnability (issue 15); + the Belgian block (sedan,
   // truck), sine-wave road, ISO 8608 class C, cleat, mu-jump and mu-split braking (issue 16);
   // + braking 100-0 (issue 18); + the mu-split accelerations of the sedan-4x4 and the 6x4
-  // tractor's differentials (issue 17 item 6), the tractor with cab, engine and seat (item 4), the truck on rigid axles
-  // (items 1, 3)
-  EXPECT_EQ(files, 21);
+  // tractor's differentials (issue 17 item 6), the tractor with cab, engine and seat (item 4), the
+  // truck on rigid axles (items 1, 3), the tractor with frame torsion (item 5)
+  EXPECT_EQ(files, 22);
 }
 
 TEST(Vehicle, TruckStepSteerSettlesAtOneAndTwoMilliseconds) {
