@@ -5,7 +5,7 @@
 // acceleration (a banked road) from the two-part roll model, with and without the frame, and a
 // stiff frame as the one rigid chassis; (c) the static loads unchanged (rigid body on springs);
 // (d) analytic against finite-difference partials, and a maneuver at h = 1 ms without
-// allocation; the config's [frame] keys.
+// allocation; the config's [frame] keys; rigid axles behind the split (the rigid-axle truck).
 #include <cmath>
 #include <cstdio>
 #include <numbers>
