@@ -24,10 +24,6 @@ void check_split(StrictTable& t, const VehicleParams& p, double split_x_m) {
     if (std::abs(a.position_x_m - split_x_m) < 0.05)
       throw t.error("split_x_m", "the split must lie at least 0.05 m from every axle (an axle at " +
                                      std::to_string(a.position_x_m) + " m)");
-    if (a.position_x_m < split_x_m && a.kind == model::vehicle::AxleKind::kRigid)
-      throw t.error("split_x_m",
-                    "a rigid axle behind the split is not supported yet (frame torsion moves "
-                    "independent axles only)");
   }
   for (const auto& b : p.free_bodies) {
     for (const auto& m : b.mounts) {

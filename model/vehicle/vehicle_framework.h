@@ -172,6 +172,18 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   void rear_tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv, const Vector& y,
                            const Vector& z, Matrix& dq_dy, Matrix& dq_dz) const noexcept;
   void frame_jacobians(Matrix& dq_dy, Matrix& dq_dz) const noexcept;
+  struct RearRigidPoint {  ///< a rigid axle's wheel behind the split, twisted with the rear part
+    Vec3 centre_m, d_dheave, d_droll_m, d_dtwist_m, from_axis_m, spin_axis;
+  };
+  [[nodiscard]] RearRigidPoint rear_rigid_point(int i, const Vector& y) const noexcept;
+  void rear_rigid_mass_matrix(int axle, const Vector& y, Matrix& m) const noexcept;
+  [[nodiscard]] WheelContact rear_rigid_contact(const Mat3& rot, const Vector& y, const Vector& z,
+                                                int i) const noexcept;
+  void rear_rigid_wheel_applied(int i, const Mat3& rot, const Vector& y, const Vector& z,
+                                const Vec3& g, Vec3& ft, Vec3& tr, Vector& q,
+                                AxleHousingLoad& housing) const noexcept;
+  void rear_rigid_tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv, const Vector& y,
+                                 const Vector& z, Matrix& dq_dy, Matrix& dq_dz) const noexcept;
   /// Is independent wheel i on the frame's rear part?
   [[nodiscard]] bool twisted(int i) const noexcept {
     return twist_ >= 0 && rear_[static_cast<std::size_t>(i / 2)];

@@ -185,3 +185,174 @@ double VehicleFramework::torsion_moment_nm(const Vector& y, const Vector& z) con
 }
 
 }  // namespace rig::model::vehicle
+
+namespace rig::model::vehicle {
+
+// ---- rigid axles behind the split: the axle's heave and roll against the rear part, the whole
+// axle twisted with it (p = a + Rx(theta)(p_axle(h, phi) - a)); its columns Rx e_z, Rx dp/dphi
+// and e_x x (p - a), the carrier turning with omega + (phi' + theta') e_x ----
+
+VehicleFramework::RearRigidPoint VehicleFramework::rear_rigid_point(
+    int i, const Vector& y) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  const Eigen::Index h = 6 + 2 * (i / 2);
+  const double theta = y(twist_);
+  const RigidWheelPoint w = rigid_wheel_point(rigid_geometry_[k / 2], i % 2, y(h), y(h + 1));
+  const TwistedPoint c = twisted_point(frame_, w.centre_m, theta);
+  return {c.point_m,
+          twist_rotate(theta, Vec3::UnitZ()),
+          twist_rotate(theta, w.d_droll_m),
+          c.d_dtwist_m,
+          twist_rotate(theta, w.from_axis_m),
+          twist_rotate(theta, work_.wheels[k].spin_axis)};
+}
+
+void VehicleFramework::rear_rigid_mass_matrix(int axle, const Vector& y, Matrix& m) const noexcept {
+  const auto a = static_cast<std::size_t>(axle);
+  const Eigen::Index h = 6 + 2 * static_cast<Eigen::Index>(axle);
+  const double mw = p_.axles[a].unsprung_mass_kg;
+  const Eigen::Index idx[3] = {h, h + 1, twist_};
+  for (int side = 0; side < 2; ++side) {
+    const RearRigidPoint w = rear_rigid_point(2 * axle + side, y);
+    const Mat3 rx = skew(w.centre_m);
+    const Vec3* cols[3] = {&w.d_dheave, &w.d_droll_m, &w.d_dtwist_m};
+    m.block<3, 3>(0, 0).diagonal().array() += mw;
+    m.block<3, 3>(0, 3) -= mw * rx;
+    m.block<3, 3>(3, 0) += mw * rx;
+    m.block<3, 3>(3, 3) += mw * rx.transpose() * rx;
+    for (int j = 0; j < 3; ++j) {
+      const Vec3& g = *cols[j];
+      const Vec3 rxg = w.centre_m.cross(g);
+      m.block<3, 1>(0, idx[j]) += mw * g;
+      m.block<1, 3>(idx[j], 0) += mw * g.transpose();
+      m.block<3, 1>(3, idx[j]) += mw * rxg;
+      m.block<1, 3>(idx[j], 3) += mw * rxg.transpose();
+      for (int l = 0; l < 3; ++l) m(idx[j], idx[l]) += mw * g.dot(*cols[l]);
+    }
+  }
+  // the roll inertia beyond the point masses, on omega_x + roll' + twist'
+  const double di = rigid_geometry_[a].extra_roll_inertia_kgm2;
+  const Eigen::Index r[3] = {3, h + 1, twist_};
+  for (const Eigen::Index j : r)
+    for (const Eigen::Index l : r) m(j, l) += di;
+}
+
+WheelContact VehicleFramework::rear_rigid_contact(const Mat3& rot, const Vector& y, const Vector& z,
+                                                  int i) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  const Eigen::Index h = 6 + 2 * (i / 2);
+  const RearRigidPoint w = rear_rigid_point(i, y);
+  const Vec3 hub_velocity = w.d_dheave * z(h) + w.d_droll_m * z(h + 1) + w.d_dtwist_m * z(twist_);
+  const double r0 = p_.axles[k / 2].tire.tmeasy.radius_unloaded_m;
+  WheelContact c = road_.is_plane()
+                       ? wheel_contact(road_, rot, y.head<3>(), z.segment<3>(0), z.segment<3>(3),
+                                       w.centre_m, hub_velocity, w.spin_axis, r0)
+                       : wheel_contact(work_.wheels[k].road, rot, y.head<3>(), z.segment<3>(0),
+                                       z.segment<3>(3), w.centre_m, hub_velocity, w.spin_axis, r0);
+  const Vec3 extra = (z(h + 1) + z(twist_)) * ex_cross(c.lever_m - w.centre_m);
+  c.vx_mps += c.ex.dot(extra);
+  c.vy_mps += c.ey.dot(extra);
+  c.penetration_rate_mps -= c.normal.dot(extra);
+  return c;
+}
+
+void VehicleFramework::rear_rigid_wheel_applied(int i, const Mat3& rot, const Vector& y,
+                                                const Vector& z, const Vec3& g, Vec3& ft, Vec3& tr,
+                                                Vector& q,
+                                                AxleHousingLoad& housing) const noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  const Eigen::Index h = 6 + 2 * (i / 2);
+  const Vec3 v = z.segment<3>(0), w = z.segment<3>(3);
+  const RearRigidPoint pt = rear_rigid_point(i, y);
+  const Vec3& r = pt.centre_m;
+  const double td = z(twist_), rd = z(h + 1);
+  const Vec3 rel = pt.d_dheave * z(h) + pt.d_droll_m * rd + pt.d_dtwist_m * td;
+  // transport, Coriolis; the roll's and the twist's centripetal and cross terms (both about e_x)
+  const Vec3 a0 = w.cross(v) + w.cross(w.cross(r)) + 2.0 * w.cross(rel) +
+                  rd * rd * ex_cross(ex_cross(pt.from_axis_m)) + td * td * ex_cross(pt.d_dtwist_m) +
+                  2.0 * td * ex_cross(pt.d_dheave * z(h) + pt.d_droll_m * rd);
+  const CarrierLoad l = carrier_load(i, rot, y, z, g, r, a0);
+  const Vec3& f = l.force_n;
+  const Vec3& s = l.contact.spin_axis;
+  ft += f;
+  const Vec3 m_carrier =
+      l.contact_moment_nm - l.contact_moment_nm.dot(s) * s - l.spin_torque_nm * s;
+  tr += r.cross(f) + m_carrier;
+  q(h) += pt.d_dheave.dot(f);
+  q(h + 1) += pt.d_droll_m.dot(f) + m_carrier.x();
+  q(twist_) += pt.d_dtwist_m.dot(f) + m_carrier.x();
+  // the leaf's housing load as on the front part (rigid_wheel_applied); the twist turns about
+  // x, so x stays the rear part's fore-aft and the pitch moment is taken in the chassis' axes
+  // (the twist is a few centiradians: cos 0.03 = 0.9996)
+  const double dvdt_x = state_.acceleration_mps2.x() - w.cross(v).x();
+  housing.force_x_n += f.x() - p_.axles[k / 2].unsprung_mass_kg * dvdt_x;
+  housing.moment_y_nm += m_carrier.y();
+}
+
+void VehicleFramework::rear_rigid_tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv,
+                                                 const Vector& y, const Vector& z, Matrix& dq_dy,
+                                                 Matrix& dq_dz) const noexcept {
+  // as rigid_tire_jacobians with the twist's column (the contact force's moment about the axis)
+  const auto k = static_cast<std::size_t>(i);
+  const tire::TmeasyParams& t = p_.axles[k / 2].tire.tmeasy;
+  const Eigen::Index h = 6 + 2 * (i / 2);
+  const WheelContact c = contact(rot, y, z, i);
+  if (c.penetration_m <= 0) return;
+  const RearRigidPoint pt = rear_rigid_point(i, y);
+  const Vec3 about_centre = ex_cross(c.lever_m - pt.centre_m);
+  const Vec3 roll_col = pt.d_droll_m + about_centre;
+  const Vec3 twist_col = pt.d_dtwist_m + about_centre;
+  const tire::TireCharacteristic& ch = work_.wheels[k].tire.characteristic;
+  const tire::TireKinematics kin = tire_kinematics(c, i);
+  const tire::TireSlip slip = tire::slip_of(ch, kin, t.velocity_floor_mps);
+  const tire::DampingPaths paths = tire::damping_paths(t, ch, kin, slip.f_per_slip);
+  const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};
+  const double damp[3] = {t.vertical_damping_nspm, paths.long_nspm, paths.lat_nspm};
+  using Row9 = Eigen::Matrix<double, 9, 1>;
+  using Block9 = Eigen::Matrix<double, 9, 9>;
+  Block9 dz_block = Block9::Zero();
+  Block9 dy_block;
+  for (int d = 0; d < 3; ++d) {
+    const Vec3& u = *dirs[d];
+    Row9 a, b;
+    a << u, pt.centre_m.cross(u), pt.d_dheave.dot(u), roll_col.dot(u), twist_col.dot(u);
+    b << u, c.lever_m.cross(u), pt.d_dheave.dot(u), roll_col.dot(u), twist_col.dot(u);
+    dz_block.noalias() -= (damp[d] * a) * b.transpose();
+    if (d == 0) {
+      Row9 bk;  // d pen / d y = -n^T J_P K
+      bk << rot * b.segment<3>(0), e_inv.transpose() * b.segment<3>(3), b.tail<3>();
+      dy_block.noalias() = (-t.vertical_stiffness_npm * a) * bk.transpose();
+      // the wheel's force (last step's) on its moving levers, as rigid_tire_jacobians: the contact
+      // point's height on roll and twist; the second derivatives of p in roll and twist, both
+      // about e_x (e_x x (e_x x d) . f = -(d_y f_y + d_z f_z)); the heave axis turning with the
+      // twist
+      const WheelForces& out = work_.wheels[k].out;
+      const Vec3 tire_force = out.force_x_n * c.ex + out.force_y_n * c.ey;
+      const double lever = ex_cross(c.normal).dot(tire_force);
+      dy_block.row(7) -= lever * bk.transpose();
+      dy_block.row(8) -= lever * bk.transpose();
+      const Vec3 f = tire_force + out.load_n * c.normal;
+      const double roll2 = pt.from_axis_m.y() * f.y() + pt.from_axis_m.z() * f.z();
+      const double twist2 = pt.d_dtwist_m.z() * f.y() - pt.d_dtwist_m.y() * f.z();  // p - a
+      dy_block(7, 7) -= roll2;
+      dy_block(7, 8) -= roll2;
+      dy_block(8, 7) -= roll2;
+      dy_block(8, 8) -= twist2;
+      dy_block(6, 8) += ex_cross(pt.d_dheave).dot(f);
+      dy_block(8, 6) += ex_cross(pt.d_dheave).dot(f);  // the twist's lever moves with the heave
+    }
+  }
+  const Eigen::Index idx[3] = {h, h + 1, twist_};
+  const auto scatter = [&idx](const Block9& blk, Matrix& m) {
+    m.topLeftCorner<6, 6>() += blk.topLeftCorner<6, 6>();
+    for (int j = 0; j < 3; ++j) {
+      m.block<6, 1>(0, idx[j]) += blk.block<6, 1>(0, 6 + j);
+      m.block<1, 6>(idx[j], 0) += blk.block<1, 6>(6 + j, 0);
+      for (int l = 0; l < 3; ++l) m(idx[j], idx[l]) += blk(6 + j, 6 + l);
+    }
+  };
+  scatter(dz_block, dq_dz);
+  scatter(dy_block, dq_dy);
+}
+
+}  // namespace rig::model::vehicle

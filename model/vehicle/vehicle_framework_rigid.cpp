@@ -47,6 +47,7 @@ AxleSuspensionForces VehicleFramework::axle_suspension_forces(
 
 WheelContact VehicleFramework::rigid_contact(const Mat3& rot, const Vector& y, const Vector& z,
                                              int i) const noexcept {
+  if (twisted(i)) return rear_rigid_contact(rot, y, z, i);  // behind the frame's split
   const auto k = static_cast<std::size_t>(i);
   const Eigen::Index h = 6 + 2 * (i / 2);
   const RigidWheelPoint w = rigid_wheel_point(rigid_geometry_[k / 2], i % 2, y(h), y(h + 1));
@@ -67,6 +68,10 @@ WheelContact VehicleFramework::rigid_contact(const Mat3& rot, const Vector& y, c
 }
 
 void VehicleFramework::rigid_mass_matrix(int axle, const Vector& y, Matrix& m) const noexcept {
+  if (twisted(2 * axle)) {  // behind the frame's split
+    rear_rigid_mass_matrix(axle, y, m);
+    return;
+  }
   const auto a = static_cast<std::size_t>(axle);
   const Eigen::Index h = 6 + 2 * static_cast<Eigen::Index>(axle);
   const double mw = p_.axles[a].unsprung_mass_kg;
@@ -99,6 +104,10 @@ void VehicleFramework::rigid_mass_matrix(int axle, const Vector& y, Matrix& m) c
 void VehicleFramework::rigid_wheel_applied(int i, const Mat3& rot, const Vector& y, const Vector& z,
                                            const Vec3& g, Vec3& ft, Vec3& tr, Vector& q,
                                            AxleHousingLoad& housing) const noexcept {
+  if (twisted(i)) {  // behind the frame's split
+    rear_rigid_wheel_applied(i, rot, y, z, g, ft, tr, q, housing);
+    return;
+  }
   const auto k = static_cast<std::size_t>(i);
   const Eigen::Index h = 6 + 2 * (i / 2);
   const Vec3 v = z.segment<3>(0), w = z.segment<3>(3);
@@ -140,6 +149,10 @@ void VehicleFramework::rigid_tire_jacobians(int i, const Mat3& rot, const Mat3& 
                                             Matrix& dq_dz) const noexcept {
   // as tire_jacobians, with the axle's two columns: force rows at the wheel centre (J_C^T u;
   // on the roll at the contact point, J_P^T u), velocity rows at the contact (u^T J_P)
+  if (twisted(i)) {  // behind the frame's split
+    rear_rigid_tire_jacobians(i, rot, e_inv, y, z, dq_dy, dq_dz);
+    return;
+  }
   const auto k = static_cast<std::size_t>(i);
   const tire::TmeasyParams& t = p_.axles[k / 2].tire.tmeasy;
   const Eigen::Index h = 6 + 2 * (i / 2);

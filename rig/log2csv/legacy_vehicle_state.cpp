@@ -154,8 +154,8 @@ bool decode_v2(const Event& event, State& msg) {
 }
 
 bool v2_has_row(std::string_view name) {
-  return !name.starts_with("wheel_axle_") && !frame_or_leaf(name) &&
-         !name.starts_with("diff_") && name != "num_diffs";
+  return !name.starts_with("wheel_axle_") && !frame_or_leaf(name) && !name.starts_with("diff_") &&
+         name != "num_diffs";
 }
 
 bool decode_v3(const Event& event, State& msg) {

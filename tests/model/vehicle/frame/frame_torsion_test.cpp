@@ -5,7 +5,7 @@
 // acceleration (a banked road) from the two-part roll model, with and without the frame, and a
 // stiff frame as the one rigid chassis; (c) the static loads unchanged (rigid body on springs);
 // (d) analytic against finite-difference partials, and a maneuver at h = 1 ms without
-// allocation; the config's [frame] keys.
+// allocation; the config's [frame] keys; rigid axles behind the split (the rigid-axle truck).
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -432,6 +432,88 @@ TEST(FrameTorsion, CircleAtOneMillisecondWithoutAllocation) {
                    f.torsion_stiffness_nmprad * u.frame_twist_rad +
                        f.torsion_damping_nmsprad * u.frame_twist_rate_radps);
   EXPECT_GT(std::abs(u.frame_twist_rad), 1e-4);
+}
+
+/// The truck on rigid axles (config/vehicles/truck-3axle-rigid.toml) with a frame split between
+/// its front axle and the tandem: the rigid tandem moves with the rear part.
+VehicleParams rigid_truck_with_frame() {
+  VehicleParams p =
+      io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle-rigid.toml");
+  p.frame.enabled = true;
+  p.frame.torsion_stiffness_nmprad = 2e5;
+  p.frame.torsion_damping_nmsprad = 2500;
+  p.frame.split_x_m = 0.5 * (p.axles[0].position_x_m + p.axles[1].position_x_m);
+  p.frame.rear_mass_kg = 0.4 * p.chassis.mass_kg;
+  p.frame.rear_cg_x_m = p.frame.split_x_m - 1.0;
+  p.frame.rear_roll_inertia_kgm2 = 0.3 * p.chassis.inertia_kgm2[0];
+  p.frame.axis_height_m = 0.9;
+  return p;
+}
+
+TEST(FrameTorsion, RigidAxlesBehindTheSplit) {
+  VehicleParams with = rigid_truck_with_frame();
+  VehicleParams without = with;
+  without.frame.enabled = false;
+  // static axle loads: unchanged by the frame (a rigid body on springs, the rigid-axle test's
+  // hand formula for equal springs and the CG at x = 0: F_a = W (S2 - x_a S1) / (n S2 - S1^2))
+  double s1 = 0, s2 = 0;
+  for (const AxleParams& a : with.axles)
+    s1 += a.position_x_m, s2 += a.position_x_m * a.position_x_m;
+  for (int a = 0; a < 3; ++a) {
+    const double x = with.axles[static_cast<std::size_t>(a)].position_x_m;
+    const double hand = with.chassis.mass_kg * kG * (s2 - x * s1) / (3 * s2 - s1 * s1) +
+                        with.axles[static_cast<std::size_t>(a)].rigid.mass_kg * kG;
+    double loads[2];
+    int k = 0;
+    for (const VehicleParams* p : {&without, &with}) {
+      VehicleModel m(*p, kH);
+      Signals s = test::all_driver_inputs();
+      rest(m, s, 2.0);
+      loads[k++] = m.wheel_load_n(2 * a) + m.wheel_load_n(2 * a + 1);
+    }
+    std::printf("rigid truck: axle %d load %.1f N with frame, %.1f without, hand %.1f\n", a + 1,
+                loads[1], loads[0], hand);
+    EXPECT_NEAR(loads[1], loads[0], 1e-5 * loads[0]);
+    EXPECT_NEAR(loads[1], hand, 1e-3 * hand);
+  }
+  // a step steer at 60 km/h: the frame twists, the partials of the twist as finite differences
+  VehicleModel m(with, kH);
+  (void)m.settle(16.67);
+  Signals s = test::all_driver_inputs();
+  const long n = std::lround(3.0 / kH);
+  for (long k = 0; k < n; ++k) {
+    s[Signal::kSteeringWheelAngleCmd] = k < 500 ? 0.0 : 0.8;
+    s[Signal::kThrottlePedal] = 0.3;
+    ASSERT_EQ(m.step(s), StepStatus::kOk) << fault_kind_name(m.last_fault().kind);
+  }
+  auto& fw = m.framework();
+  const Eigen::Index dim = fw.size(), tw = fw.twist_index();
+  std::printf("rigid truck, step steer: twist %.5f rad\n", fw.coordinates()(tw));
+  EXPECT_GT(std::abs(fw.coordinates()(tw)), 1e-4);
+  Eigen::MatrixXd ay(dim, dim), az(dim, dim), fy(dim, dim), fz(dim, dim);
+  Eigen::VectorXd wy(dim), wz(dim), q0(dim), q1(dim);
+  ASSERT_TRUE(fw.force_jacobians(fw.coordinates(), fw.speeds(), ay, az));
+  solver::finite_difference_force_jacobians<Eigen::Dynamic>(fw, fw.coordinates(), fw.speeds(), fy,
+                                                            fz, wy, wz, q0, q1);
+  std::printf("twist: dq/dy %.4g (fd %.4g), dq/dz %.4g (fd %.4g)\n", ay(tw, tw), fy(tw, tw),
+              az(tw, tw), fz(tw, tw));
+  const double scale = std::abs(fy(tw, tw));
+  // gravity on the twisted masses stays explicit (as the body's roll): its geometric stiffness
+  // m g (height above the axis) of the rear part and of the tandem's wheels is in the finite
+  // differences only
+  double gravity =
+      with.frame.rear_mass_kg * kG * (with.chassis.cg_height_m - with.frame.axis_height_m);
+  for (int i = 2; i < 6; ++i)
+    gravity += with.axles[static_cast<std::size_t>(i / 2)].unsprung_mass_kg * kG *
+               (fw.mount(i).z() + with.chassis.cg_height_m - with.frame.axis_height_m);
+  std::printf("gravity's geometric stiffness on the twist %.4g N m/rad\n", gravity);
+  EXPECT_NEAR(ay(tw, tw) + gravity, fy(tw, tw), 2e-3 * scale);
+  EXPECT_NEAR(az(tw, tw), fz(tw, tw), 2e-2 * std::abs(fz(tw, tw)));
+  for (const Eigen::Index h : {8, 9, 10, 11}) {  // the tandem's heave and roll
+    EXPECT_NEAR(ay(h, tw), fy(h, tw), 2e-3 * scale) << "row " << h;
+    EXPECT_NEAR(ay(tw, h), fy(tw, h), 2e-3 * scale) << "column " << h;
+  }
+  for (const Eigen::Index h : {6, 7}) EXPECT_EQ(ay(h, tw), 0.0);  // the front axle
 }
 
 }  // namespace
