@@ -155,11 +155,13 @@ TEST(Log2Csv, ReproducesKnownValuesAndFlattensArrays) {
   const Table state = read_csv(dir / "RIG_STATE.csv");
   ASSERT_EQ(state.rows.size(), 300u);
   EXPECT_EQ(state.header.front(), "timestamp_us");
-  // 8 leading scalars, 2 units x 15, num_wheels, 6 x (1 + 24 + 1 flag: 17 + the 5 road fields
-  // of issue 16 + the 2 rigid-axle fields of issue 17), 15 scalars, gear and the 3 model-validity
+  // 8 leading scalars, 2 units x (15 + the 3 frame-torsion fields of issue 17), num_wheels,
+  // 6 x (1 + 24 + 1 flag: 17 + the 5 road fields of issue 16 + the 2 rigid-axle fields of issue
+  // 17; + the 6 leaf-spring fields of issue 17), 15 scalars, gear and the 3 model-validity
   // fields, num_joints, 1 joint x 5, num_diffs (issue 17; the synthetic model has no
   // differentials: no diff columns).
-  EXPECT_EQ(state.header.size(), 8u + 30u + 1u + 156u + 15u + 3u + 2u + 5u + 1u);
+  EXPECT_EQ(state.header.size(),
+            8u + 2u * (15u + 3u) + 1u + 6u * (26u + 6u) + 15u + 3u + 2u + 5u + 1u);
   EXPECT_EQ(state.rows[123].size(), state.header.size());
   EXPECT_EQ(state.number(123, "cycle"), 123.0);
   EXPECT_EQ(state.number(123, "sim_time_s"), 0.123);
