@@ -3,6 +3,7 @@
 // the sprung mass is a point mass at its CG c(theta) plus its roll inertia on omega_x + theta';
 // the independent wheels behind the split are point masses at r(theta) with
 // J_v = [I, -[r]x, Rx(theta) e_s, e_x x (r - a)] and their carriers turn with omega + theta' e_x.
+#include <array>
 #include <cmath>
 
 #include "model/tire/tmeasy_tire.h"
@@ -289,6 +290,48 @@ void VehicleFramework::rear_rigid_wheel_applied(int i, const Mat3& rot, const Ve
   housing.moment_y_nm += m_carrier.y();
 }
 
+namespace {
+
+using Row9 = Eigen::Matrix<double, 9, 1>;
+using Block9 = Eigen::Matrix<double, 9, 9>;
+
+/// The wheel's force (last step's) on its moving levers, as rigid_tire_jacobians: the contact
+/// point's height on roll and twist; the second derivatives of p in roll and twist, both about
+/// e_x (e_x x (e_x x d) . f = -(d_y f_y + d_z f_z)); the heave axis turning with the twist.
+void add_moving_lever_partials(const WheelForces& out, const WheelContact& c,
+                               const Vec3& from_axis_m, const Vec3& d_dtwist_m,
+                               const Vec3& d_dheave, const Row9& bk, Block9& dy_block) noexcept {
+  const Vec3 tire_force = out.force_x_n * c.ex + out.force_y_n * c.ey;
+  const double lever = ex_cross(c.normal).dot(tire_force);
+  dy_block.row(7) -= lever * bk.transpose();
+  dy_block.row(8) -= lever * bk.transpose();
+  const Vec3 f = tire_force + out.load_n * c.normal;
+  const double roll2 = from_axis_m.y() * f.y() + from_axis_m.z() * f.z();
+  const double twist2 = d_dtwist_m.z() * f.y() - d_dtwist_m.y() * f.z();  // p - a
+  dy_block(7, 7) -= roll2;
+  dy_block(7, 8) -= roll2;
+  dy_block(8, 7) -= roll2;
+  dy_block(8, 8) -= twist2;
+  dy_block(6, 8) += ex_cross(d_dheave).dot(f);
+  dy_block(8, 6) += ex_cross(d_dheave).dot(f);  // the twist's lever moves with the heave
+}
+
+/// Adds a wheel's 9 x 9 block (body 6, heave, roll, twist) into the framework's matrix.
+template <typename Matrix>
+void scatter_heave_roll_twist(const Block9& blk, const std::array<Eigen::Index, 3>& idx,
+                              Matrix& m) noexcept {
+  m.template topLeftCorner<6, 6>() += blk.topLeftCorner<6, 6>();
+  for (std::size_t j = 0; j < 3; ++j) {
+    const auto bj = static_cast<Eigen::Index>(6 + j);
+    m.template block<6, 1>(0, idx[j]) += blk.block<6, 1>(0, bj);
+    m.template block<1, 6>(idx[j], 0) += blk.block<1, 6>(bj, 0);
+    for (std::size_t l = 0; l < 3; ++l)
+      m(idx[j], idx[l]) += blk(bj, static_cast<Eigen::Index>(6 + l));
+  }
+}
+
+}  // namespace
+
 void VehicleFramework::rear_rigid_tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv,
                                                  const Vector& y, const Vector& z, Matrix& dq_dy,
                                                  Matrix& dq_dz) const noexcept {
@@ -308,8 +351,6 @@ void VehicleFramework::rear_rigid_tire_jacobians(int i, const Mat3& rot, const M
   const tire::DampingPaths paths = tire::damping_paths(t, ch, kin, slip.f_per_slip);
   const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};
   const double damp[3] = {t.vertical_damping_nspm, paths.long_nspm, paths.lat_nspm};
-  using Row9 = Eigen::Matrix<double, 9, 1>;
-  using Block9 = Eigen::Matrix<double, 9, 9>;
   Block9 dz_block = Block9::Zero();
   Block9 dy_block;
   for (int d = 0; d < 3; ++d) {
@@ -322,37 +363,13 @@ void VehicleFramework::rear_rigid_tire_jacobians(int i, const Mat3& rot, const M
       Row9 bk;  // d pen / d y = -n^T J_P K
       bk << rot * b.segment<3>(0), e_inv.transpose() * b.segment<3>(3), b.tail<3>();
       dy_block.noalias() = (-t.vertical_stiffness_npm * a) * bk.transpose();
-      // the wheel's force (last step's) on its moving levers, as rigid_tire_jacobians: the contact
-      // point's height on roll and twist; the second derivatives of p in roll and twist, both
-      // about e_x (e_x x (e_x x d) . f = -(d_y f_y + d_z f_z)); the heave axis turning with the
-      // twist
-      const WheelForces& out = work_.wheels[k].out;
-      const Vec3 tire_force = out.force_x_n * c.ex + out.force_y_n * c.ey;
-      const double lever = ex_cross(c.normal).dot(tire_force);
-      dy_block.row(7) -= lever * bk.transpose();
-      dy_block.row(8) -= lever * bk.transpose();
-      const Vec3 f = tire_force + out.load_n * c.normal;
-      const double roll2 = pt.from_axis_m.y() * f.y() + pt.from_axis_m.z() * f.z();
-      const double twist2 = pt.d_dtwist_m.z() * f.y() - pt.d_dtwist_m.y() * f.z();  // p - a
-      dy_block(7, 7) -= roll2;
-      dy_block(7, 8) -= roll2;
-      dy_block(8, 7) -= roll2;
-      dy_block(8, 8) -= twist2;
-      dy_block(6, 8) += ex_cross(pt.d_dheave).dot(f);
-      dy_block(8, 6) += ex_cross(pt.d_dheave).dot(f);  // the twist's lever moves with the heave
+      add_moving_lever_partials(work_.wheels[k].out, c, pt.from_axis_m, pt.d_dtwist_m, pt.d_dheave,
+                                bk, dy_block);
     }
   }
-  const Eigen::Index idx[3] = {h, h + 1, twist_};
-  const auto scatter = [&idx](const Block9& blk, Matrix& m) {
-    m.topLeftCorner<6, 6>() += blk.topLeftCorner<6, 6>();
-    for (int j = 0; j < 3; ++j) {
-      m.block<6, 1>(0, idx[j]) += blk.block<6, 1>(0, 6 + j);
-      m.block<1, 6>(idx[j], 0) += blk.block<1, 6>(6 + j, 0);
-      for (int l = 0; l < 3; ++l) m(idx[j], idx[l]) += blk(6 + j, 6 + l);
-    }
-  };
-  scatter(dz_block, dq_dz);
-  scatter(dy_block, dq_dy);
+  const std::array<Eigen::Index, 3> idx{h, h + 1, twist_};
+  scatter_heave_roll_twist(dz_block, idx, dq_dz);
+  scatter_heave_roll_twist(dy_block, idx, dq_dy);
 }
 
 }  // namespace rig::model::vehicle
