@@ -1,5 +1,6 @@
 #include "model/vehicle/leaf_axle.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -124,8 +125,11 @@ void LeafAxleSuspension::settle_rest(double preload_left_n, double preload_right
   // unknowns u = (x, pitch, z_left, z_right): no fore-aft force, no moment, each leaf carrying
   // its static load (on_axle F_z = -preload: the leaf pushes the axle down)
   const std::array<double, 2> preload{preload_left_n, preload_right_n};
-  const double rate_guess_npm = 1e5;
-  Eigen::Vector4d u(0, 0, preload[0] / rate_guess_npm, preload[1] / rate_guess_npm);
+  // first guess: a van leaf's rate, but short of the free camber - a truck's heavier preload
+  // over that rate would start the leaf beyond flat, where Newton finds it turned inside out
+  const double rate_guess_npm = 1e5, most_m = 0.9 * leaf_.params().free_camber_m;
+  Eigen::Vector4d u(0, 0, std::min(preload[0] / rate_guess_npm, most_m),
+                    std::min(preload[1] / rate_guess_npm, most_m));
   for (std::size_t k = 0; k < 2; ++k) {
     rest_.leaf[k] = leaf_.free_state();
     leaf_.settle(ls::SeatPose(u(0), u(2 + k), u(1)), rest_.leaf[k]);

@@ -916,6 +916,45 @@ def case_braking_van_leaf(s, rows):
     check(most <= 12, f"at most {most} leaf Newton iterations per step")
 
 
+def case_braking_tractor_leaf(s, rows):
+    check(s["stop_reason"] == "event", "the stop event ended the run")
+    ev = {e["name"]: e["time_s"] for e in s["scenario_events"]}
+    steady = [r for r in rows if r["sim_time_s"] > ev["brake"] + 0.8 and r["unit0_vx_mps"] > 3.0]
+    check(len(steady) > 1000, f"{len(steady)} steady braking states")
+    # the deceleration from the brake and drive torques at the rolling radii: within 5 % of
+    # sum T / (r_D m), m = 8950 kg (the tractor with cab, engine and seat)
+    ax = sum(r["unit0_ax_mps2"] for r in steady) / len(steady)
+    force = sum(sum((r[f"wheel{i}_brake_torque_nm"] + r[f"wheel{i}_drive_torque_nm"]) /
+                    r[f"wheel{i}_rolling_radius_m"] for i in range(6)) for r in steady) / len(steady)
+    check(abs(ax - force / 8950.0) < 0.05 * abs(ax), f"a_x {ax:.2f} m/s^2, sum T/r_D/m {force / 8950:.2f}")
+    # the load moves to the steer axle: m a_x h_CG / wheelbase (8.95 t, CG ~1.1 m over the
+    # road, 3.6 m to the tandem centre) within 30 % (the frame's pitch, the cab's lag, no rocker)
+    before = at(rows, ev["brake"] - 0.1)
+    front = lambda r: r["wheel0_load_n"] + r["wheel1_load_n"]
+    gain = sum(front(r) for r in steady) / len(steady) - front(before)
+    transfer = 8950.0 * -ax * 1.1 / 3.6
+    check(abs(gain - transfer) < 0.3 * transfer, f"steer axle +{gain:.0f} N, m a h / l {transfer:.0f} N")
+    # every axle winds up nose-down (+ about y) under its brake reaction: the steer leaf
+    # (FE wind-up stiffness 159.6 kN m/rad per leaf) within 50 % of M / k_w (the braking force at
+    # the axle centre, 0.10 m under the leaf, winds it further; the heavier load changes it a bit)
+    for r in steady[::250]:
+        moment = -(r["wheel0_brake_torque_nm"] + r["wheel0_drive_torque_nm"])
+        windup, alone = r["wheel0_leaf_windup_rad"], moment / 159600.0
+        check(0.5 * alone < windup < 1.5 * alone, f"steer wind-up {windup * 1e3:.2f} mrad, M/k_w {alone * 1e3:.2f}")
+        # the first tandem axle winds up likewise (FE k_w 236.6 kN m/rad per leaf); solo the last one is nearly unloaded (7.9 kN
+        # static, no rocker: config/vehicles/tractor-6x4-leaf.toml) and the ~10 kN moving
+        # forward lifts it off the road: no brake force, no wind-up
+        m2 = -(r["wheel2_brake_torque_nm"] + r["wheel2_drive_torque_nm"])
+        w2 = r["wheel2_leaf_windup_rad"]
+        check(0.5 * m2 / 236600.0 < w2 < 1.5 * m2 / 236600.0,
+              f"first tandem axle's wind-up {w2 * 1e3:.2f} mrad, M/k_w {m2 / 236.6:.2f}")
+        last = r["wheel4_load_n"] + r["wheel5_load_n"]
+        check(last < 400 and abs(r["wheel4_leaf_windup_rad"]) < 1e-3,
+              f"last axle lifted: {last:.0f} N, wind-up {r['wheel4_leaf_windup_rad'] * 1e3:.2f} mrad")
+    most = max(max(r[f"wheel{i}_leaf_iterations"] for i in range(6)) for r in rows)
+    check(most <= 12, f"at most {most} leaf Newton iterations per step")
+
+
 case = globals().get("case_" + NAME.replace("-", "_"))  # combination-x-y: case_combination_x_y
 if case is None:
     fail(f"no physical check for {NAME}: add case_{NAME.replace('-', '_')} to {__file__}")

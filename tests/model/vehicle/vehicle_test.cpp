@@ -474,8 +474,8 @@ TEST(VehicleConfig, ManeuverFilesNameTheirVehicleAndRunAtOneMillisecond) {
   // + braking 100-0 (issue 18); + the mu-split accelerations of the sedan-4x4 and the 6x4
   // tractor's differentials (issue 17 item 6), the tractor with cab, engine and seat (item 4), the
   // truck on rigid axles (items 1, 3), the frame-torsion tractor's circle (item 5), the
-  // leaf-sprung van's braking (leaf axle)
-  EXPECT_EQ(files, 23);
+  // leaf-sprung van's braking (leaf axle), the leaf-sprung tractor's braking (item 7)
+  EXPECT_EQ(files, 24);
 }
 
 TEST(Vehicle, TruckStepSteerSettlesAtOneAndTwoMilliseconds) {

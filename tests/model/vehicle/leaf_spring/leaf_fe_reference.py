@@ -34,6 +34,15 @@ import numpy as np
 STATIC_LOAD_N = 7500.0
 VERTICAL_LOADS_N = [-1500.0 + 750.0 * k for k in range(18)]  # -1.5 .. 11.25 kN
 WINDUP_MOMENTS_NM = [-2000.0 + 500.0 * k for k in range(9)]
+
+
+def scale_loads(static_load_n):
+    """--static-load-n: the same load cases scaled to another leaf's static load (a truck's)."""
+    global STATIC_LOAD_N, VERTICAL_LOADS_N, WINDUP_MOMENTS_NM
+    f = static_load_n / STATIC_LOAD_N
+    STATIC_LOAD_N = static_load_n
+    VERTICAL_LOADS_N = [f * x for x in VERTICAL_LOADS_N]
+    WINDUP_MOMENTS_NM = [f * x for x in WINDUP_MOMENTS_NM]
 RIGID_FACTOR = 1e4  # the seat block's beams: this much stiffer in bending than the leaf
 RIGID_AXIAL_FACTOR = 1e2  # and this much axially (more only adds round-off)
 SHACKLE_AXIAL_NPM = 1e10
@@ -276,7 +285,11 @@ def main():
     ap.add_argument("--elements", type=int, default=40)
     ap.add_argument("--out")
     ap.add_argument("--check")
+    ap.add_argument("--static-load-n", type=float, default=STATIC_LOAD_N,
+                    help="the leaf's static load (default the van's 7500 N); scales all cases")
     args = ap.parse_args()
+    if args.static_load_n != STATIC_LOAD_N:
+        scale_loads(args.static_load_n)
     self_test()
     with open(args.params, "rb") as fh:
         params = tomllib.load(fh)["axle"]["leaf_spring"]
