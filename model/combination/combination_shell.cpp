@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "model/combination/combination_hold.h"
+
 namespace rig::model::combination {
 namespace {
 
@@ -109,9 +111,7 @@ vehicle::Equilibrium CombinationShell::settle(double speed_mps, int gear_request
   for (auto& u : units_) poses.push_back(u->begin_settle(speed_mps));
   vehicle::Equilibrium e = vehicle::settle_loop(
       h_, speed_mps, gear_request, [&](Signals& s) { return step(s) == StepStatus::kOk; },
-      [&] {
-        for (auto& u : units_) u->hold_plane_motion(speed_mps);
-      },
+      [&] { hold_in_line(units_, p_.joints, speed_mps); },
       [&] { return units_[0]->state().acceleration_mps2.x(); });
   // back by one translation (the leading unit's): the settled heave and pitch moved the hitch
   // points, the units' own start poses would no longer meet the joints

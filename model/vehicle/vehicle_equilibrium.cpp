@@ -14,10 +14,10 @@ VehicleModel::Pose VehicleModel::begin_settle(double speed_mps) noexcept {
   return pose;
 }
 
-void VehicleModel::hold_plane_motion(double speed_mps) noexcept {
+void VehicleModel::hold_plane_motion(double speed_mps, double lateral_mps) noexcept {
   const Vec6 old_y = state_.framework_y.head<6>(), old_z = state_.framework_z.head<6>();
   state_.framework_z(0) = speed_mps;
-  state_.framework_z(1) = 0;
+  state_.framework_z(1) = lateral_mps;
   state_.framework_z(5) = 0;
   carry_free_bodies(p_, old_y, old_z, state_);  // the bodies move with the chassis
 }

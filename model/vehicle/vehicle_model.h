@@ -103,7 +103,9 @@ class VehicleModel final : public SteppedModel, public solver::CouplableSystem {
     double x_m = 0, y_m = 0, yaw_rad = 0;
   };
   Pose begin_settle(double speed_mps) noexcept;
-  void hold_plane_motion(double speed_mps) noexcept;
+  /// lateral_mps: the CG's lateral speed (body axes) to hold instead of 0 - a trailing unit's,
+  /// so that its joint point moves with the leading unit's (combination_hold.h).
+  void hold_plane_motion(double speed_mps, double lateral_mps = 0.0) noexcept;
   void end_settle(const Pose& pose, double speed_mps) noexcept;
 
  private:
