@@ -8,6 +8,7 @@
 
 #include "model/tire/tmeasy_tire.h"
 #include "model/tire/vertical_tire_force.h"
+#include "model/vehicle/point_mass_columns.h"
 #include "model/vehicle/vehicle_framework.h"
 
 namespace rig::model::vehicle {
@@ -48,24 +49,7 @@ void VehicleFramework::frame_mass_matrix(const Vector& y, Matrix& m) const noexc
 void VehicleFramework::rear_wheel_mass_matrix(int i, const Vector& y, Matrix& m) const noexcept {
   const double mw = p_.axles[static_cast<std::size_t>(i / 2)].unsprung_mass_kg;
   const RearWheelPose w = rear_wheel_pose(i, y);
-  const Mat3 rx = skew(w.centre_m);
-  const Eigen::Index h = 6 + i;
-  // J_v = [I, -[r]x, e_s, g]: M += m J_v^T J_v
-  m.block<3, 3>(0, 0).diagonal().array() += mw;
-  m.block<3, 3>(0, 3) -= mw * rx;
-  m.block<3, 3>(3, 0) += mw * rx;
-  m.block<3, 3>(3, 3) += mw * rx.transpose() * rx;
-  const Vec3* cols[2] = {&w.hub_axis, &w.d_dtwist_m};
-  const Eigen::Index idx[2] = {h, twist_};
-  for (int j = 0; j < 2; ++j) {
-    const Vec3& g = *cols[j];
-    const Vec3 rxg = w.centre_m.cross(g);
-    m.block<3, 1>(0, idx[j]) += mw * g;
-    m.block<1, 3>(idx[j], 0) += mw * g.transpose();
-    m.block<3, 1>(3, idx[j]) += mw * rxg;
-    m.block<1, 3>(idx[j], 3) += mw * rxg.transpose();
-    for (int l = 0; l < 2; ++l) m(idx[j], idx[l]) += mw * g.dot(*cols[l]);
-  }
+  add_point_mass<2>(m, mw, w.centre_m, {&w.hub_axis, &w.d_dtwist_m}, {6 + i, twist_});
 }
 
 WheelContact VehicleFramework::rear_wheel_contact(const Mat3& rot, const Vector& y, const Vector& z,
@@ -212,24 +196,10 @@ void VehicleFramework::rear_rigid_mass_matrix(int axle, const Vector& y, Matrix&
   const auto a = static_cast<std::size_t>(axle);
   const Eigen::Index h = 6 + 2 * static_cast<Eigen::Index>(axle);
   const double mw = p_.axles[a].unsprung_mass_kg;
-  const Eigen::Index idx[3] = {h, h + 1, twist_};
   for (int side = 0; side < 2; ++side) {
     const RearRigidPoint w = rear_rigid_point(2 * axle + side, y);
-    const Mat3 rx = skew(w.centre_m);
-    const Vec3* cols[3] = {&w.d_dheave, &w.d_droll_m, &w.d_dtwist_m};
-    m.block<3, 3>(0, 0).diagonal().array() += mw;
-    m.block<3, 3>(0, 3) -= mw * rx;
-    m.block<3, 3>(3, 0) += mw * rx;
-    m.block<3, 3>(3, 3) += mw * rx.transpose() * rx;
-    for (int j = 0; j < 3; ++j) {
-      const Vec3& g = *cols[j];
-      const Vec3 rxg = w.centre_m.cross(g);
-      m.block<3, 1>(0, idx[j]) += mw * g;
-      m.block<1, 3>(idx[j], 0) += mw * g.transpose();
-      m.block<3, 1>(3, idx[j]) += mw * rxg;
-      m.block<1, 3>(idx[j], 3) += mw * rxg.transpose();
-      for (int l = 0; l < 3; ++l) m(idx[j], idx[l]) += mw * g.dot(*cols[l]);
-    }
+    add_point_mass<3>(m, mw, w.centre_m, {&w.d_dheave, &w.d_droll_m, &w.d_dtwist_m},
+                      {h, h + 1, twist_});
   }
   // the roll inertia beyond the point masses, on omega_x + roll' + twist'
   const double di = rigid_geometry_[a].extra_roll_inertia_kgm2;
