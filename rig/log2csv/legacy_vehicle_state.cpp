@@ -78,6 +78,16 @@ void copy_wheels(const Legacy& a, State& b) {
   b.wheel_slip_valid = a.wheel_slip_valid;
 }
 
+/// The road under each wheel (issue 16; v2 on).
+template <typename Legacy>
+void copy_road(const Legacy& a, State& b) {
+  b.wheel_road_z_m = a.wheel_road_z_m;
+  b.wheel_road_normal_x = a.wheel_road_normal_x;
+  b.wheel_road_normal_y = a.wheel_road_normal_y;
+  b.wheel_road_normal_z = a.wheel_road_normal_z;
+  b.wheel_road_mu = a.wheel_road_mu;
+}
+
 template <typename Legacy>
 void copy_vehicle_and_joints(const Legacy& a, State& b) {
   b.steering_wheel_angle_rad = a.steering_wheel_angle_rad;
@@ -144,11 +154,7 @@ bool decode_v2(const Event& event, State& msg) {
   if (v2.decode(event.data, 0, static_cast<int>(event.size)) < 0) return false;
   copy_frame_and_units(v2, msg);
   copy_wheels(v2, msg);
-  msg.wheel_road_z_m = v2.wheel_road_z_m;
-  msg.wheel_road_normal_x = v2.wheel_road_normal_x;
-  msg.wheel_road_normal_y = v2.wheel_road_normal_y;
-  msg.wheel_road_normal_z = v2.wheel_road_normal_z;
-  msg.wheel_road_mu = v2.wheel_road_mu;
+  copy_road(v2, msg);
   copy_vehicle_and_joints(v2, msg);
   return true;
 }
@@ -163,11 +169,7 @@ bool decode_v3(const Event& event, State& msg) {
   if (v3.decode(event.data, 0, static_cast<int>(event.size)) < 0) return false;
   copy_frame_and_units(v3, msg);
   copy_wheels(v3, msg);
-  msg.wheel_road_z_m = v3.wheel_road_z_m;
-  msg.wheel_road_normal_x = v3.wheel_road_normal_x;
-  msg.wheel_road_normal_y = v3.wheel_road_normal_y;
-  msg.wheel_road_normal_z = v3.wheel_road_normal_z;
-  msg.wheel_road_mu = v3.wheel_road_mu;
+  copy_road(v3, msg);
   msg.wheel_axle_heave_m = v3.wheel_axle_heave_m;
   msg.wheel_axle_roll_rad = v3.wheel_axle_roll_rad;
   copy_vehicle_and_joints(v3, msg);
