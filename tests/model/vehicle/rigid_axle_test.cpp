@@ -14,6 +14,7 @@
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
 #include "tests/support/fd_jacobians.h"
+#include "tests/support/vehicle_rest.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -24,15 +25,7 @@ VehicleParams rigid_truck() {
   return io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/truck-3axle-rigid.toml");
 }
 
-/// At rest in neutral with the brakes on, settled (VehicleModel::settle), then `seconds` more.
-void rest(VehicleModel& m, Signals& s, double seconds) {
-  s[Signal::kGearRequest] = 0;
-  s[Signal::kBrakePressureFront] = 8e5;
-  s[Signal::kBrakePressureRear] = 8e5;
-  (void)m.settle(0.0, 0);
-  const long n = std::lround(seconds / m.step_size_s());
-  for (long k = 0; k < n; ++k) ASSERT_EQ(m.step(s), StepStatus::kOk);
-}
+using test::rest;  // at rest, brakes on, settled (tests/support/vehicle_rest.h)
 
 double axle_load_n(const VehicleModel& m, int a) {
   return m.wheel_load_n(2 * a) + m.wheel_load_n(2 * a + 1);

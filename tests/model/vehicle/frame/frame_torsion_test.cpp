@@ -19,6 +19,7 @@
 #include "model/vehicle/vehicle_model.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
+#include "tests/support/vehicle_rest.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -36,15 +37,7 @@ VehicleParams cab_tractor() {
   return io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/tractor-6x4-cab.toml");
 }
 
-/// At rest in neutral with the brakes on, settled, then `seconds` more.
-void rest(VehicleModel& m, Signals& s, double seconds) {
-  s[Signal::kGearRequest] = 0;
-  s[Signal::kBrakePressureFront] = 8e5;
-  s[Signal::kBrakePressureRear] = 8e5;
-  (void)m.settle(0.0, 0);
-  const long n = std::lround(seconds / m.step_size_s());
-  for (long k = 0; k < n; ++k) ASSERT_EQ(m.step(s), StepStatus::kOk);
-}
+using test::rest;  // at rest, brakes on, settled (tests/support/vehicle_rest.h)
 
 /// Roll stiffness of axle a against the ground: the suspension (springs k at +-t/2, the bar's
 /// wheel rate k_b on the travel difference: t^2 (k/2 + k_b)) in series with the tires
