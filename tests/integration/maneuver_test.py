@@ -888,18 +888,26 @@ def case_circle_tractor_frame(s, rows):
     check(share > rigid_share + 0.15, "the soft frame keeps the front part's roll moment at the front")
 
 
-def case_braking_van_leaf(s, rows):
+def steady_braking(s, rows, after_s, min_states, mass_kg, wheels):
+    """A leaf-braking maneuver's steady window (from after_s past the brake event's ramp until
+    3 m/s) and its mean a_x, checked: the stop event ended the run, the window has more than
+    min_states states, and a_x is within 5 % of the brake and drive torques at the rolling radii,
+    sum T / (r_D m) (minus drag, the wheels' spin inertia). Returns (events, steady rows, a_x)."""
     check(s["stop_reason"] == "event", "the stop event ended the run")
     ev = {e["name"]: e["time_s"] for e in s["scenario_events"]}
-    # steady braking: 0.5 s after the ramp until 3 m/s
-    steady = [r for r in rows if r["sim_time_s"] > ev["brake"] + 0.5 and r["unit0_vx_mps"] > 3.0]
-    check(len(steady) > 2000, f"{len(steady)} steady braking states")
-    # the deceleration from the brake and drive torques at the rolling radii (minus drag, the
-    # wheels' spin inertia): within 5 % of sum T / (r_D m), m = 3500 kg
+    steady = [r for r in rows if r["sim_time_s"] > ev["brake"] + after_s and r["unit0_vx_mps"] > 3.0]
+    check(len(steady) > min_states, f"{len(steady)} steady braking states")
     ax = sum(r["unit0_ax_mps2"] for r in steady) / len(steady)
     force = sum(sum((r[f"wheel{i}_brake_torque_nm"] + r[f"wheel{i}_drive_torque_nm"]) /
-                    r[f"wheel{i}_rolling_radius_m"] for i in range(4)) for r in steady) / len(steady)
-    check(abs(ax - force / 3500.0) < 0.05 * abs(ax), f"a_x {ax:.2f} m/s^2, sum T/r_D/m {force / 3500:.2f}")
+                    r[f"wheel{i}_rolling_radius_m"] for i in range(wheels)) for r in steady) / len(steady)
+    check(abs(ax - force / mass_kg) < 0.05 * abs(ax),
+          f"a_x {ax:.2f} m/s^2, sum T/r_D/m {force / mass_kg:.2f}")
+    return ev, steady, ax
+
+
+def case_braking_van_leaf(s, rows):
+    # steady braking 0.5 s after the ramp until 3 m/s; m = 3500 kg
+    ev, steady, ax = steady_braking(s, rows, 0.5, 2000, 3500.0, 4)
     # the rear axle winds up nose-down (+ about y) under the brake reaction: at most what the
     # moment alone gives the FE leaf (43.71 kN m/rad each), at least 60 % of it (the rear's
     # unloading takes some back; leaf_axle_test compares the superposition within 10 %)
@@ -917,16 +925,9 @@ def case_braking_van_leaf(s, rows):
 
 
 def case_braking_tractor_leaf(s, rows):
-    check(s["stop_reason"] == "event", "the stop event ended the run")
-    ev = {e["name"]: e["time_s"] for e in s["scenario_events"]}
-    steady = [r for r in rows if r["sim_time_s"] > ev["brake"] + 0.8 and r["unit0_vx_mps"] > 3.0]
-    check(len(steady) > 1000, f"{len(steady)} steady braking states")
-    # the deceleration from the brake and drive torques at the rolling radii: within 5 % of
-    # sum T / (r_D m), m = 8950 kg (the tractor with cab, engine and seat)
-    ax = sum(r["unit0_ax_mps2"] for r in steady) / len(steady)
-    force = sum(sum((r[f"wheel{i}_brake_torque_nm"] + r[f"wheel{i}_drive_torque_nm"]) /
-                    r[f"wheel{i}_rolling_radius_m"] for i in range(6)) for r in steady) / len(steady)
-    check(abs(ax - force / 8950.0) < 0.05 * abs(ax), f"a_x {ax:.2f} m/s^2, sum T/r_D/m {force / 8950:.2f}")
+    # steady braking 0.8 s after the ramp until 3 m/s; m = 8950 kg (the tractor with cab, engine
+    # and seat)
+    ev, steady, ax = steady_braking(s, rows, 0.8, 1000, 8950.0, 6)
     # the load moves to the steer axle: m a_x h_CG / wheelbase (8.95 t, CG ~1.1 m over the
     # road, 3.6 m to the tandem centre) within 30 % (the frame's pitch, the cab's lag, no rocker)
     before = at(rows, ev["brake"] - 0.1)
