@@ -5,6 +5,7 @@
 #include "model/tire/tmeasy_tire.h"
 #include "model/tire/vertical_tire_force.h"
 #include "model/vehicle/free_body/free_bodies.h"
+#include "model/vehicle/tire_partials.h"
 
 namespace rig::model::vehicle {
 
@@ -289,40 +290,14 @@ void VehicleFramework::tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv,
   if (c.penetration_m <= 0) return;
   const Vec3 centre = wheel_centre(i, y(h));
   const Vec3 es = hub_axis(i);
-  const tire::TireCharacteristic& ch = work_.wheels[k].tire.characteristic;
-  const tire::TireKinematics kin = tire_kinematics(c, i);
-  const tire::TireSlip slip = tire::slip_of(ch, kin, t.velocity_floor_mps);
-  // d F / d v along each direction: vertical damping; eq. (24) damping paths at fixed f
-  const tire::DampingPaths paths = tire::damping_paths(t, ch, kin, slip.f_per_slip);
-  // the rows have non-zeros only in the body columns 0..5 and the hub column h: update the
-  // 7 x 7 sub-block instead of a dense outer product
-  const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};
-  const double damp[3] = {t.vertical_damping_nspm, paths.long_nspm, paths.lat_nspm};
-  using Row7 = Eigen::Matrix<double, 7, 1>;
-  Eigen::Matrix<double, 7, 7> dz_block = Eigen::Matrix<double, 7, 7>::Zero();
-  Eigen::Matrix<double, 7, 7> dy_block;
-  for (int d = 0; d < 3; ++d) {
-    const Vec3& u = *dirs[d];
-    Row7 a, b;
-    a << u, centre.cross(u), es.dot(u);
-    b << u, c.lever_m.cross(u), es.dot(u);
-    dz_block.noalias() -= (damp[d] * a) * b.transpose();
-    if (d == 0) {
-      // penetration rate = -n^T J_P z, and y' = K^-1 z: d pen / d y = -n^T J_P K
-      Row7 bk;
-      bk << rot * b.segment<3>(0), e_inv.transpose() * b.segment<3>(3), b(6);
-      dy_block.noalias() = (-t.vertical_stiffness_npm * a) * bk.transpose();
-    }
-  }
-  // scatter the 7 x 7 block (body columns 0..5 and the hub column h)
-  const auto scatter = [h](const Eigen::Matrix<double, 7, 7>& blk, Matrix& m) {
-    m.topLeftCorner<6, 6>() += blk.topLeftCorner<6, 6>();
-    m.block<6, 1>(0, h) += blk.block<6, 1>(0, 6);
-    m.block<1, 6>(h, 0) += blk.block<1, 6>(6, 0);
-    m(h, h) += blk(6, 6);
-  };
-  scatter(dz_block, dq_dz);
-  scatter(dy_block, dq_dy);
+  // the rows have non-zeros only in the body columns 0..5 and the hub column h: a 7 x 7
+  // sub-block instead of a dense outer product
+  TirePartials<1> j;
+  tire_partials<1>(c, centre, {&es}, rot, e_inv, t.vertical_stiffness_npm,
+                   tire_damping_nspm(t, work_.wheels[k].tire.characteristic, tire_kinematics(c, i)),
+                   j);
+  scatter_tire_block<1>(j.dq_dz, {h}, dq_dz);
+  scatter_tire_block<1>(j.dq_dy, {h}, dq_dy);
 }
 
 bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,

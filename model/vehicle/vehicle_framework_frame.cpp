@@ -9,6 +9,7 @@
 #include "model/tire/tmeasy_tire.h"
 #include "model/tire/vertical_tire_force.h"
 #include "model/vehicle/point_mass_columns.h"
+#include "model/vehicle/tire_partials.h"
 #include "model/vehicle/vehicle_framework.h"
 
 namespace rig::model::vehicle {
@@ -123,40 +124,12 @@ void VehicleFramework::rear_tire_jacobians(int i, const Mat3& rot, const Mat3& e
   if (c.penetration_m <= 0) return;
   const RearWheelPose pose = rear_wheel_pose(i, y);
   const Vec3 twist_col = pose.d_dtwist_m + ex_cross(c.lever_m - pose.centre_m);
-  const tire::TireCharacteristic& ch = work_.wheels[k].tire.characteristic;
-  const tire::TireKinematics kin = tire_kinematics(c, i);
-  const tire::TireSlip slip = tire::slip_of(ch, kin, t.velocity_floor_mps);
-  const tire::DampingPaths paths = tire::damping_paths(t, ch, kin, slip.f_per_slip);
-  const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};
-  const double damp[3] = {t.vertical_damping_nspm, paths.long_nspm, paths.lat_nspm};
-  using Row8 = Eigen::Matrix<double, 8, 1>;
-  using Block8 = Eigen::Matrix<double, 8, 8>;
-  Block8 dz_block = Block8::Zero();
-  Block8 dy_block;
-  for (int d = 0; d < 3; ++d) {
-    const Vec3& u = *dirs[d];
-    Row8 a, b;
-    a << u, pose.centre_m.cross(u), pose.hub_axis.dot(u), twist_col.dot(u);
-    b << u, c.lever_m.cross(u), pose.hub_axis.dot(u), twist_col.dot(u);
-    dz_block.noalias() -= (damp[d] * a) * b.transpose();
-    if (d == 0) {
-      Row8 bk;  // d pen / d y = -n^T J_P K (K = 1 on the hub and the twist)
-      bk << rot * b.segment<3>(0), e_inv.transpose() * b.segment<3>(3), b(6), b(7);
-      dy_block.noalias() = (-t.vertical_stiffness_npm * a) * bk.transpose();
-    }
-  }
-  const Eigen::Index tw = twist_;
-  const auto scatter = [h, tw](const Block8& blk, Matrix& m) {
-    const Eigen::Index idx[2] = {h, tw};
-    m.topLeftCorner<6, 6>() += blk.topLeftCorner<6, 6>();
-    for (int j = 0; j < 2; ++j) {
-      m.block<6, 1>(0, idx[j]) += blk.block<6, 1>(0, 6 + j);
-      m.block<1, 6>(idx[j], 0) += blk.block<1, 6>(6 + j, 0);
-      for (int l = 0; l < 2; ++l) m(idx[j], idx[l]) += blk(6 + j, 6 + l);
-    }
-  };
-  scatter(dz_block, dq_dz);
-  scatter(dy_block, dq_dy);
+  TirePartials<2> j;
+  tire_partials<2>(
+      c, pose.centre_m, {&pose.hub_axis, &twist_col}, rot, e_inv, t.vertical_stiffness_npm,
+      tire_damping_nspm(t, work_.wheels[k].tire.characteristic, tire_kinematics(c, i)), j);
+  scatter_tire_block<2>(j.dq_dz, {h, twist_}, dq_dz);
+  scatter_tire_block<2>(j.dq_dy, {h, twist_}, dq_dy);
 }
 
 void VehicleFramework::frame_jacobians(Matrix& dq_dy, Matrix& dq_dz) const noexcept {
@@ -286,20 +259,6 @@ void add_moving_lever_partials(const WheelForces& out, const WheelContact& c,
   dy_block(8, 6) += ex_cross(d_dheave).dot(f);  // the twist's lever moves with the heave
 }
 
-/// Adds a wheel's 9 x 9 block (body 6, heave, roll, twist) into the framework's matrix.
-template <typename Matrix>
-void scatter_heave_roll_twist(const Block9& blk, const std::array<Eigen::Index, 3>& idx,
-                              Matrix& m) noexcept {
-  m.template topLeftCorner<6, 6>() += blk.topLeftCorner<6, 6>();
-  for (std::size_t j = 0; j < 3; ++j) {
-    const auto bj = static_cast<Eigen::Index>(6 + j);
-    m.template block<6, 1>(0, idx[j]) += blk.block<6, 1>(0, bj);
-    m.template block<1, 6>(idx[j], 0) += blk.block<1, 6>(bj, 0);
-    for (std::size_t l = 0; l < 3; ++l)
-      m(idx[j], idx[l]) += blk(bj, static_cast<Eigen::Index>(6 + l));
-  }
-}
-
 }  // namespace
 
 void VehicleFramework::rear_rigid_tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv,
@@ -315,31 +274,15 @@ void VehicleFramework::rear_rigid_tire_jacobians(int i, const Mat3& rot, const M
   const Vec3 about_centre = ex_cross(c.lever_m - pt.centre_m);
   const Vec3 roll_col = pt.d_droll_m + about_centre;
   const Vec3 twist_col = pt.d_dtwist_m + about_centre;
-  const tire::TireCharacteristic& ch = work_.wheels[k].tire.characteristic;
-  const tire::TireKinematics kin = tire_kinematics(c, i);
-  const tire::TireSlip slip = tire::slip_of(ch, kin, t.velocity_floor_mps);
-  const tire::DampingPaths paths = tire::damping_paths(t, ch, kin, slip.f_per_slip);
-  const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};
-  const double damp[3] = {t.vertical_damping_nspm, paths.long_nspm, paths.lat_nspm};
-  Block9 dz_block = Block9::Zero();
-  Block9 dy_block;
-  for (int d = 0; d < 3; ++d) {
-    const Vec3& u = *dirs[d];
-    Row9 a, b;
-    a << u, pt.centre_m.cross(u), pt.d_dheave.dot(u), roll_col.dot(u), twist_col.dot(u);
-    b << u, c.lever_m.cross(u), pt.d_dheave.dot(u), roll_col.dot(u), twist_col.dot(u);
-    dz_block.noalias() -= (damp[d] * a) * b.transpose();
-    if (d == 0) {
-      Row9 bk;  // d pen / d y = -n^T J_P K
-      bk << rot * b.segment<3>(0), e_inv.transpose() * b.segment<3>(3), b.tail<3>();
-      dy_block.noalias() = (-t.vertical_stiffness_npm * a) * bk.transpose();
-      add_moving_lever_partials(work_.wheels[k].out, c, pt.from_axis_m, pt.d_dtwist_m, pt.d_dheave,
-                                bk, dy_block);
-    }
-  }
+  TirePartials<3> j;
+  tire_partials<3>(
+      c, pt.centre_m, {&pt.d_dheave, &roll_col, &twist_col}, rot, e_inv, t.vertical_stiffness_npm,
+      tire_damping_nspm(t, work_.wheels[k].tire.characteristic, tire_kinematics(c, i)), j);
+  add_moving_lever_partials(work_.wheels[k].out, c, pt.from_axis_m, pt.d_dtwist_m, pt.d_dheave,
+                            j.pen_dy, j.dq_dy);
   const std::array<Eigen::Index, 3> idx{h, h + 1, twist_};
-  scatter_heave_roll_twist(dz_block, idx, dq_dz);
-  scatter_heave_roll_twist(dy_block, idx, dq_dy);
+  scatter_tire_block<3>(j.dq_dz, idx, dq_dz);
+  scatter_tire_block<3>(j.dq_dy, idx, dq_dy);
 }
 
 }  // namespace rig::model::vehicle

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "model/tire/tmeasy_tire.h"
+#include "model/vehicle/tire_partials.h"
 #include "model/vehicle/vehicle_framework.h"
 
 namespace rig::model::vehicle {
@@ -161,43 +162,20 @@ void VehicleFramework::rigid_tire_jacobians(int i, const Mat3& rot, const Mat3& 
   const RigidWheelPoint pt = rigid_wheel_point(rigid_geometry_[k / 2], i % 2, y(h), y(h + 1));
   const Vec3& centre = pt.centre_m;
   const Vec3 roll_col = pt.d_droll_m + roll_cross(c.lever_m - centre);  // d contact / d roll
-  const tire::TireCharacteristic& ch = work_.wheels[k].tire.characteristic;
-  const tire::TireKinematics kin = tire_kinematics(c, i);
-  const tire::TireSlip slip = tire::slip_of(ch, kin, t.velocity_floor_mps);
-  const tire::DampingPaths paths = tire::damping_paths(t, ch, kin, slip.f_per_slip);
-  const Vec3* dirs[3] = {&c.normal, &c.ex, &c.ey};
-  const double damp[3] = {t.vertical_damping_nspm, paths.long_nspm, paths.lat_nspm};
-  using Row8 = Eigen::Matrix<double, 8, 1>;
-  using Block8 = Eigen::Matrix<double, 8, 8>;
-  Block8 dz_block = Block8::Zero();
-  Block8 dy_block;
-  for (int d = 0; d < 3; ++d) {
-    const Vec3& u = *dirs[d];
-    Row8 a, b;
-    a << u, centre.cross(u), u.z(), roll_col.dot(u);
-    b << u, c.lever_m.cross(u), u.z(), roll_col.dot(u);
-    dz_block.noalias() -= (damp[d] * a) * b.transpose();
-    if (d == 0) {
-      Row8 bk;  // d pen / d y = -n^T J_P K
-      bk << rot * b.segment<3>(0), e_inv.transpose() * b.segment<3>(3), b(6), b(7);
-      dy_block.noalias() = (-t.vertical_stiffness_npm * a) * bk.transpose();
-      // on the roll, the wheel's force (last step's) on its moving lever: the contact point
-      // rises with the centre's height (-height n below it), and d(dp/dphi)/dphi = e_x x (e_x x d)
-      const WheelForces& out = work_.wheels[k].out;
-      const Vec3 tire_force = out.force_x_n * c.ex + out.force_y_n * c.ey;
-      dy_block.row(7) -= roll_cross(c.normal).dot(tire_force) * bk.transpose();
-      const Vec3 f = tire_force + out.load_n * c.normal;
-      dy_block(7, 7) -= pt.from_axis_m.y() * f.y() + pt.from_axis_m.z() * f.z();
-    }
-  }
-  const auto scatter = [h](const Block8& blk, Matrix& m) {
-    m.topLeftCorner<6, 6>() += blk.topLeftCorner<6, 6>();
-    m.block<6, 2>(0, h) += blk.block<6, 2>(0, 6);
-    m.block<2, 6>(h, 0) += blk.block<2, 6>(6, 0);
-    m.block<2, 2>(h, h) += blk.block<2, 2>(6, 6);
-  };
-  scatter(dz_block, dq_dz);
-  scatter(dy_block, dq_dy);
+  const Vec3 e_z = Vec3::UnitZ();
+  TirePartials<2> j;
+  tire_partials<2>(c, centre, {&e_z, &roll_col}, rot, e_inv, t.vertical_stiffness_npm,
+                   tire_damping_nspm(t, work_.wheels[k].tire.characteristic, tire_kinematics(c, i)),
+                   j);
+  // on the roll, the wheel's force (last step's) on its moving lever: the contact point rises
+  // with the centre's height (-height n below it), and d(dp/dphi)/dphi = e_x x (e_x x d)
+  const WheelForces& out = work_.wheels[k].out;
+  const Vec3 tire_force = out.force_x_n * c.ex + out.force_y_n * c.ey;
+  j.dq_dy.row(7) -= roll_cross(c.normal).dot(tire_force) * j.pen_dy.transpose();
+  const Vec3 f = tire_force + out.load_n * c.normal;
+  j.dq_dy(7, 7) -= pt.from_axis_m.y() * f.y() + pt.from_axis_m.z() * f.z();
+  scatter_tire_block<2>(j.dq_dz, {h, h + 1}, dq_dz);
+  scatter_tire_block<2>(j.dq_dy, {h, h + 1}, dq_dy);
 }
 
 }  // namespace rig::model::vehicle
