@@ -127,6 +127,16 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
     WheelContact contact;
     WheelForces tire;
     double spin_torque_nm;  ///< drive + brake torque about the spin axis
+    /// Adds the load to the body's force and moment sums ft, tr (r: the wheel centre) and
+    /// returns its moment on the carrier about the centre: the contact force's except its
+    /// spin-axis part (the spin DOF carries that) and the drive and brake torques' reaction.
+    Vec3 add_to_body(const Vec3& r, Vec3& ft, Vec3& tr) const noexcept {
+      const Vec3& s = contact.spin_axis;
+      ft += force_n;
+      const Vec3 m_carrier = contact_moment_nm - contact_moment_nm.dot(s) * s - spin_torque_nm * s;
+      tr += r.cross(force_n) + m_carrier;
+      return m_carrier;
+    }
   };
   /// At wheel centre r with the velocity-dependent acceleration a0 (transport, Coriolis: the
   /// hub's or the axle's own) and gravity g (chassis axes).

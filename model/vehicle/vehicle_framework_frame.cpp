@@ -87,11 +87,7 @@ void VehicleFramework::rear_wheel_applied(int i, const Mat3& rot, const Vector& 
                   2.0 * td * ex_cross(pose.hub_axis * sd) + td * td * ex_cross(pose.d_dtwist_m);
   const CarrierLoad l = carrier_load(i, rot, y, z, g, r, a0);
   const Vec3& f = l.force_n;
-  const Vec3& s = l.contact.spin_axis;
-  ft += f;
-  const Vec3 m_carrier =
-      l.contact_moment_nm - l.contact_moment_nm.dot(s) * s - l.spin_torque_nm * s;
-  tr += r.cross(f) + m_carrier;
+  const Vec3 m_carrier = l.add_to_body(r, ft, tr);
   q(6 + i) = pose.hub_axis.dot(f) - l.tire.suspension_n;
   q(twist_) += pose.d_dtwist_m.dot(f) + m_carrier.x();
 }
@@ -217,11 +213,7 @@ void VehicleFramework::rear_rigid_wheel_applied(int i, const Mat3& rot, const Ve
                   2.0 * td * ex_cross(pt.d_dheave * z(h) + pt.d_droll_m * rd);
   const CarrierLoad l = carrier_load(i, rot, y, z, g, r, a0);
   const Vec3& f = l.force_n;
-  const Vec3& s = l.contact.spin_axis;
-  ft += f;
-  const Vec3 m_carrier =
-      l.contact_moment_nm - l.contact_moment_nm.dot(s) * s - l.spin_torque_nm * s;
-  tr += r.cross(f) + m_carrier;
+  const Vec3 m_carrier = l.add_to_body(r, ft, tr);
   q(h) += pt.d_dheave.dot(f);
   q(h + 1) += pt.d_droll_m.dot(f) + m_carrier.x();
   q(twist_) += pt.d_dtwist_m.dot(f) + m_carrier.x();

@@ -120,14 +120,9 @@ void VehicleFramework::rigid_wheel_applied(int i, const Mat3& rot, const Vector&
                   z(h + 1) * z(h + 1) * roll_cross(roll_cross(pt.from_axis_m));
   const CarrierLoad l = carrier_load(i, rot, y, z, g, r, a0);
   const Vec3& f = l.force_n;
-  const Vec3& s = l.contact.spin_axis;
-  ft += f;
-  // moment on the wheel carrier about its centre: the contact force's (except its spin-axis
-  // part, which the spin DOF carries) and the drive and brake torques' reactions (summed apart
-  // from r x f, unlike the independent wheel's: the rounding of the existing runs is kept)
-  const Vec3 m_carrier =
-      l.contact_moment_nm - l.contact_moment_nm.dot(s) * s - l.spin_torque_nm * s;
-  tr += r.cross(f) + m_carrier;
+  // the carrier's moment summed apart from r x f, unlike the independent wheel's: the rounding
+  // of the existing runs is kept
+  const Vec3 m_carrier = l.add_to_body(r, ft, tr);
   q(h) += f.z();
   q(h + 1) += pt.d_droll_m.dot(f) + m_carrier.x();
   // the housing's fore-aft load: f holds the transport terms of the wheel's inertia (a0), not
