@@ -218,5 +218,48 @@ TEST(LeafTractorFrame, TorsionModeFrequencyAsTheTwoPartHandModel) {
   EXPECT_NEAR(f_stiff, hand_stiff.hz, 0.05 * hand_stiff.hz);
 }
 
+/// A step steer at 60 km/h, h = 1 ms, without allocation: the frame twists, the leaf tandem on
+/// the rear part follows it (the twist's partials of the rear axles' heave and roll rows as
+/// finite differences: the axles' leaves and tires act through the twisted levers).
+TEST(LeafTractorFrame, StepSteerTwistsTheFrameAndItsPartialsMatchFiniteDifferences) {
+  const VehicleParams p = leaf_tractor();
+  VehicleModel m(p, kH);
+  (void)m.settle(16.67);
+  Signals s = test::all_driver_inputs();
+  const long n = std::lround(3.0 / kH);
+  const test::AllocationCounter counter;
+  Eigen::internal::set_is_malloc_allowed(false);
+  for (long k = 0; k < n; ++k) {
+    s[Signal::kSteeringWheelAngleCmd] = k < 500 ? 0.0 : 0.8;
+    s[Signal::kThrottlePedal] = 0.3;
+    ASSERT_EQ(m.step(s), StepStatus::kOk) << fault_kind_name(m.last_fault().kind);
+  }
+  Eigen::internal::set_is_malloc_allowed(true);
+  EXPECT_EQ(counter.count(), 0u);
+  auto& fw = m.framework();
+  const Eigen::Index dim = fw.size(), tw = fw.twist_index();
+  std::printf("leaf tractor, step steer: twist %.5f rad\n", fw.coordinates()(tw));
+  EXPECT_GT(std::abs(fw.coordinates()(tw)), 1e-4);
+  Eigen::MatrixXd ay(dim, dim), az(dim, dim), fy(dim, dim), fz(dim, dim);
+  Eigen::VectorXd wy(dim), wz(dim), q0(dim), q1(dim);
+  ASSERT_TRUE(fw.force_jacobians(fw.coordinates(), fw.speeds(), ay, az));
+  solver::finite_difference_force_jacobians<Eigen::Dynamic>(fw, fw.coordinates(), fw.speeds(), fy,
+                                                            fz, wy, wz, q0, q1);
+  std::printf("twist: dq/dy %.4g (fd %.4g), dq/dz %.4g (fd %.4g)\n", ay(tw, tw), fy(tw, tw),
+              az(tw, tw), fz(tw, tw));
+  const double scale = std::abs(fy(tw, tw));
+  // gravity's geometric stiffness on the twisted masses stays explicit (in the differences
+  // only: ~4e3 N m/rad of the rear part and the tandem)
+  EXPECT_NEAR(ay(tw, tw), fy(tw, tw), 2e-3 * scale);
+  EXPECT_NEAR(az(tw, tw), fz(tw, tw), 2e-2 * std::abs(fz(tw, tw)));
+  for (const Eigen::Index h : {8, 9, 10, 11}) {  // the tandem's heave and roll
+    std::printf("row/column %ld: %.4g (fd %.4g) / %.4g (fd %.4g)\n", static_cast<long>(h),
+                ay(h, tw), fy(h, tw), ay(tw, h), fy(tw, h));
+    EXPECT_NEAR(ay(h, tw), fy(h, tw), 2e-3 * scale) << "row " << h;
+    EXPECT_NEAR(ay(tw, h), fy(tw, h), 2e-3 * scale) << "column " << h;
+  }
+  for (const Eigen::Index h : {6, 7}) EXPECT_EQ(ay(h, tw), 0.0);  // the steer axle
+}
+
 }  // namespace
 }  // namespace rig::model::vehicle
