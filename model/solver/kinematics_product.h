@@ -5,10 +5,14 @@
 /// hub travels' ones. The general product spends most of its work on K's zeros (about 11 k
 /// instructions per step for the 40 t combination's two frameworks).
 ///
-/// Bit-identical to Eigen's GEMM (Release, SSE2, no FMA) of the same product: the GEMM
-/// accumulates each entry as 0 + sum_k dq(i, k) K(k, j) in k order and then adds alpha times
-/// it; dropping K's exact zeros from that sum does not change it, nor does a factor of 1. The
-/// sums below keep that order (0.0 + the first product, then the others).
+/// The same arithmetic as Eigen's GEMM (Release, SSE2, no FMA) of the product: it accumulates
+/// each entry as 0 + sum_k dq(i, k) K(k, j) in k order and then adds alpha times it; dropping
+/// K's exact zeros from that sum does not change it, nor does a factor of 1. The sums below keep
+/// that order (0.0 + the first product, then the others). Bit for bit equal on random matrices
+/// (solver_test) and in every run compared but one: on iso8608-class-c-80kmh (the sedan on a
+/// rough road) the roll rate differs by at most 8 ulp (5e-20 rad/s) in 6 of 6000 steps and is
+/// identical again after - a rounding-level difference whose case in Eigen's kernel is not
+/// pinned down.
 
 #include <Eigen/Core>
 
