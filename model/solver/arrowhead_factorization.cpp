@@ -32,7 +32,8 @@ ArrowheadFactorization::ArrowheadFactorization(const ArrowheadPartition& partiti
       sol_(partition.total_size()),
       body_rhs_(partition.body_size),
       head_(head),
-      tail_(tail) {
+      tail_(tail),
+      body7_(head == 6 && tail == 1 ? partition.leaf_sizes.size() : 0) {
   if (tail_ > 0) {
     ordered_.resize(partition.total_size(), partition.total_size());
     given_.resize(partition.total_size());
@@ -51,6 +52,9 @@ ArrowheadFactorization::ArrowheadFactorization(const ArrowheadPartition& partiti
   }
   leaf_tmp_.resize(max_leaf);
   body6_leaves2_ = nb == 6 && !partition.leaf_sizes.empty() &&
+                   std::all_of(partition.leaf_sizes.begin(), partition.leaf_sizes.end(),
+                               [](Eigen::Index n) { return n == 2; });
+  body7_leaves2_ = head == 6 && tail == 1 && !partition.leaf_sizes.empty() &&
                    std::all_of(partition.leaf_sizes.begin(), partition.leaf_sizes.end(),
                                [](Eigen::Index n) { return n == 2; });
   if (body6_leaves2_) {
@@ -115,6 +119,10 @@ void ArrowheadFactorization::compute(const Matrix& a) noexcept {
     compute_body6_leaves2(a);
     return;
   }
+  if (body7_leaves2_) {
+    body7_.compute(a);  // in the given order: no permuted copy
+    return;
+  }
   if (tail_ == 0) {
     compute_general(a);
     return;
@@ -148,6 +156,10 @@ void ArrowheadFactorization::compute_general(const Matrix& a) noexcept {
 void ArrowheadFactorization::solve_column() const noexcept {
   if (body6_leaves2_) {
     solve_column_body6_leaves2();
+    return;
+  }
+  if (body7_leaves2_) {
+    body7_.solve_column(rhs_, sol_);
     return;
   }
   const Eigen::Index nb = partition_.body_size;

@@ -13,12 +13,15 @@
 /// (n_B + sum n_i)^3. All storage is sized in the constructor; compute() and solve() never
 /// allocate. The vehicle's partition - a 6-DOF body and 2-DOF leaves (two hub travels per
 /// axle) - takes a fixed-size path (2 x 2 leaf inverses, 6 x 6 Schur LU): the same algebra
-/// without the dynamic-size overhead that dominates at these sizes.
+/// without the dynamic-size overhead that dominates at these sizes; with a frame's twist as a
+/// body tail of 1, likewise with a 7 x 7 Schur LU (arrowhead_body7.h).
 
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
+
+#include "model/solver/arrowhead_body7.h"
 
 namespace rig::model::solver {
 
@@ -47,6 +50,8 @@ class ArrowheadFactorization {
   /// The partition as factorized: a body tail is counted in body_size (and body_tail_size is 0),
   /// so solve_body takes the body in that order (head, then tail).
   [[nodiscard]] const ArrowheadPartition& partition() const noexcept { return partition_; }
+  /// The given partition's body head: the leading rows that are body rows in both orders.
+  [[nodiscard]] Eigen::Index body_head_size() const noexcept { return head_; }
 
   /// Factorizes a (total_size x total_size).
   void compute(const Matrix& a) noexcept;
@@ -55,7 +60,7 @@ class ArrowheadFactorization {
   template <typename Rhs, typename Dst>
   void solve(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dst>& x) const noexcept {
     for (Eigen::Index c = 0; c < b.cols(); ++c) {
-      if (tail_ == 0) {
+      if (tail_ == 0 || body7_leaves2_) {
         rhs_ = b.col(c);
         solve_column();
         x.col(c) = sol_;
@@ -72,21 +77,31 @@ class ArrowheadFactorization {
   /// x_B = body rows of A^-1 [b_B; 0], for a right-hand side that is zero on every leaf row
   /// (e.g. forces acting on the body coordinates only). With the leaves eliminated this is
   /// S^-1 b_B: one body_size solve with the factorized Schur complement per column instead of a
-  /// full solve, and no leaf rows are formed. b_B, x_B: body_size x any columns (must not alias).
+  /// full solve, and no leaf rows are formed. b_B, x_B: body_size x any columns (must not alias);
+  /// or fewer rows, at most body_head_size(): the body's further rows (a tail) are then zero and
+  /// x_B gets as many rows as b_B.
   template <typename Rhs, typename Dst>
   void solve_body(const Eigen::MatrixBase<Rhs>& b_body,
                   Eigen::MatrixBase<Dst>& x_body) const noexcept {
+    const Eigen::Index r = b_body.rows();
     for (Eigen::Index c = 0; c < b_body.cols(); ++c) {
       if (body6_leaves2_) {
         // fixed-size in and out: a solve straight into a dynamic column takes Eigen's generic
         // triangular solver, about twice the instructions
-        const Eigen::Matrix<double, 6, 1> col = b_body.col(c);
+        Eigen::Matrix<double, 6, 1> col = Eigen::Matrix<double, 6, 1>::Zero();
+        col.head(r) = b_body.col(c);
         const Eigen::Matrix<double, 6, 1> x = schur_lu6_.solve(col);
-        x_body.col(c) = x;
+        x_body.col(c) = x.head(r);
+      } else if (body7_leaves2_) {
+        ArrowheadBody7::Vec7 col = ArrowheadBody7::Vec7::Zero();
+        col.head(r) = b_body.col(c);
+        const ArrowheadBody7::Vec7 x = body7_.solve_body(col);
+        x_body.col(c) = x.head(r);
       } else {
-        body_rhs_ = b_body.col(c);
+        body_rhs_.setZero();
+        body_rhs_.head(r) = b_body.col(c);
         sol_.head(partition_.body_size) = schur_lu_.solve(body_rhs_);
-        x_body.col(c) = sol_.head(partition_.body_size);
+        x_body.col(c) = sol_.head(r);
       }
     }
   }
@@ -122,6 +137,10 @@ class ArrowheadFactorization {
   std::vector<Mat26> leaf_solved2_;             ///< A_ii^-1 A_iB
   std::vector<Mat26> body_coupling2_t_;         ///< A_Bi^T
   Eigen::PartialPivLU<Mat6> schur_lu6_;
+
+  // fixed-size path: body 6 + a tail of 1 (stored last), every leaf 2
+  bool body7_leaves2_ = false;
+  ArrowheadBody7 body7_;
 };
 
 }  // namespace rig::model::solver

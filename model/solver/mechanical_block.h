@@ -39,6 +39,11 @@ class MechanicalBlock {
     (void)y;
     k_inv.setIdentity(size(), size());
   }
+  /// The structure of K^-1, if known: 3 x 3 diagonal blocks over its first
+  /// kinematics_block3_size() rows and columns (a multiple of 3), the identity after them (a
+  /// chassis' rotation and Euler-rate blocks, then hub travels: eq. 1). -1 (default): dense.
+  /// The stepper then forms dq/dy K^-1 without the products with K's zeros.
+  [[nodiscard]] virtual Eigen::Index kinematics_block3_size() const noexcept { return -1; }
   /// Mass matrix M(y); frozen at the start of the step.
   virtual void mass_matrix(const Vector& y, Matrix& m) const noexcept = 0;
   /// Generalized applied forces q(y, z, newest states of the other blocks).

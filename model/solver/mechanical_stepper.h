@@ -17,6 +17,7 @@
 #include "model/solver/couplable_system.h"
 #include "model/solver/dense_factorization.h"
 #include "model/solver/finite_difference.h"
+#include "model/solver/kinematics_product.h"
 #include "model/solver/mechanical_block.h"
 #include "model/solver/stage.h"
 
@@ -112,7 +113,12 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
     // eq. (8): modified mass matrix M_VI = M - h dq/dz - h^2 dq/dy K^-1
     m_vi_ = m_;
     m_vi_.noalias() -= h * dq_dz_;
-    m_vi_.noalias() -= (h * h) * dq_dy_ * k_inv_;
+    const Eigen::Index blocks3 = block_.kinematics_block3_size();
+    if (blocks3 >= 0) {
+      subtract_dq_dy_k_inv(blocks3, -(h * h), dq_dy_, k_inv_, m_vi_);
+    } else {
+      m_vi_.noalias() -= (h * h) * dq_dy_ * k_inv_;
+    }
     factorization_.compute(m_vi_);
     factorization_.solve(q_, z_u_);
     resolve_friction(h);
@@ -132,10 +138,12 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
   void solve_mass_leading(ConstMatrixRef b, MatrixRef x) const noexcept override {
     if constexpr (requires(const Factorization& f, ConstMatrixRef& rhs, MatrixRef& dst) {
                     f.partition();
+                    f.body_head_size();
                     f.solve_body(rhs, dst);
                   }) {
-      if (b.rows() == factorization_.partition().body_size) {
-        factorization_.solve_body(b, x);  // S^-1 b: the leaves' rows of the rhs are zero
+      if (b.rows() == factorization_.partition().body_size ||
+          b.rows() <= factorization_.body_head_size()) {
+        factorization_.solve_body(b, x);  // S^-1 b: the leaves' (and a tail's) rows are zero
         return;
       }
     }

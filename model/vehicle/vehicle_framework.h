@@ -36,6 +36,8 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   [[nodiscard]] Vector& coordinates() noexcept override { return state_.framework_y; }
   [[nodiscard]] Vector& speeds() noexcept override { return state_.framework_z; }
   void kinematics_inverse(const Vector& y, Matrix& k_inv) const noexcept override;
+  /// K^-1 = diag(R, E, I): the rotation and Euler-rate blocks, then the identity.
+  [[nodiscard]] Eigen::Index kinematics_block3_size() const noexcept override { return 6; }
   void mass_matrix(const Vector& y, Matrix& m) const noexcept override;
   void applied_forces(const Vector& y, const Vector& z, Vector& q) const noexcept override;
   /// The stiff parts only (method.md sec. 6): suspension springs, dampers, stops and anti-roll

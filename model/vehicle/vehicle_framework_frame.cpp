@@ -24,10 +24,10 @@ void VehicleFramework::setup_frame() {
 
 VehicleFramework::RearWheelPose VehicleFramework::rear_wheel_pose(int i,
                                                                   const Vector& y) const noexcept {
-  const double theta = y(twist_);
-  const TwistedPoint c = twisted_point(frame_, wheel_centre(i, y(6 + i)), theta);
-  return {c.point_m, twist_rotate(theta, hub_axis(i)), c.d_dtwist_m,
-          twist_rotate(theta, work_.wheels[static_cast<std::size_t>(i)].spin_axis)};
+  const TwistRotation rx(y(twist_));
+  const TwistedPoint c = twisted_point(frame_, wheel_centre(i, y(6 + i)), rx);
+  return {c.point_m, rx * hub_axis(i), c.d_dtwist_m,
+          rx * work_.wheels[static_cast<std::size_t>(i)].spin_axis};
 }
 
 void VehicleFramework::frame_mass_matrix(const Vector& y, Matrix& m) const noexcept {
@@ -150,15 +150,11 @@ VehicleFramework::RearRigidPoint VehicleFramework::rear_rigid_point(
     int i, const Vector& y) const noexcept {
   const auto k = static_cast<std::size_t>(i);
   const Eigen::Index h = 6 + 2 * (i / 2);
-  const double theta = y(twist_);
+  const TwistRotation rx(y(twist_));  // cosine and sine once for the six vectors
   const RigidWheelPoint w = rigid_wheel_point(rigid_geometry_[k / 2], i % 2, y(h), y(h + 1));
-  const TwistedPoint c = twisted_point(frame_, w.centre_m, theta);
-  return {c.point_m,
-          twist_rotate(theta, Vec3::UnitZ()),
-          twist_rotate(theta, w.d_droll_m),
-          c.d_dtwist_m,
-          twist_rotate(theta, w.from_axis_m),
-          twist_rotate(theta, work_.wheels[k].spin_axis)};
+  const TwistedPoint c = twisted_point(frame_, w.centre_m, rx);
+  return {c.point_m,    rx * Vec3::UnitZ(), rx * w.d_droll_m,
+          c.d_dtwist_m, rx * w.from_axis_m, rx * work_.wheels[k].spin_axis};
 }
 
 void VehicleFramework::rear_rigid_mass_matrix(int axle, const Vector& y, Matrix& m) const noexcept {

@@ -63,16 +63,29 @@ struct FrameGeometry {
   return {v.x(), c * v.y() - s * v.z(), s * v.y() + c * v.z()};
 }
 
+/// Rx(theta) by its cosine and sine, for several vectors at one twist (the same arithmetic as
+/// twist_rotate, the cosine and sine taken once).
+struct TwistRotation {
+  double c = 1.0, s = 0.0;
+  explicit TwistRotation(double theta) noexcept : c(std::cos(theta)), s(std::sin(theta)) {}
+  [[nodiscard]] Vec3 operator*(const Vec3& v) const noexcept {
+    return {v.x(), c * v.y() - s * v.z(), s * v.y() + c * v.z()};
+  }
+};
 /// A point of the rear part at twist theta: where it is and d/dtheta.
 struct TwistedPoint {
   Vec3 point_m;
   Vec3 d_dtwist_m;  ///< e_x x (p - a)
 };
 [[nodiscard]] inline TwistedPoint twisted_point(const FrameGeometry& g, const Vec3& p0,
-                                                double theta) noexcept {
+                                                const TwistRotation& rx) noexcept {
   const Vec3 axis(p0.x(), 0.0, g.axis_z_m);
-  const Vec3 from_axis = twist_rotate(theta, p0 - axis);
+  const Vec3 from_axis = rx * (p0 - axis);
   return {axis + from_axis, ex_cross(from_axis)};
+}
+[[nodiscard]] inline TwistedPoint twisted_point(const FrameGeometry& g, const Vec3& p0,
+                                                double theta) noexcept {
+  return twisted_point(g, p0, TwistRotation(theta));
 }
 
 /// The torsion moment the frame transmits (+ resisting a + twist) [N m] and its partials.

@@ -84,9 +84,11 @@ double free_body_beyond_stop_m(const FreeBodyParams& b, int slot, const VehicleS
   const RigidPose body = body_pose(s, slot);
   double beyond = -1e9;
   for (std::size_t i = 0; i < b.mounts.size() && i < kMaxMounts; ++i) {
-    const Mount mount =
-        mounts ? mounts[i] : make_mount(b.mounts[i], vec3(b.position_m), b.through_margin_m);
-    beyond = std::max(beyond, mount_force(mount, chassis, body).beyond_stop_m);
+    const double e = mounts ? mount_beyond_stop_m(mounts[i], chassis, body)
+                            : mount_beyond_stop_m(
+                                  make_mount(b.mounts[i], vec3(b.position_m), b.through_margin_m),
+                                  chassis, body);
+    beyond = std::max(beyond, e);
   }
   return beyond;
 }

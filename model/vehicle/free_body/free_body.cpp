@@ -7,12 +7,27 @@ namespace {
 
 Vec3 vec3(const std::array<double, 3>& a) noexcept { return {a[0], a[1], a[2]}; }
 
-/// J = [I, -[p]x]: the velocity of point p from the speeds [v, omega] (own axes).
-Eigen::Matrix<double, 3, 6> point_jacobian(const Vec3& p) noexcept {
-  Eigen::Matrix<double, 3, 6> j;
-  j.leftCols<3>().setIdentity();
-  j.rightCols<3>() = -skew(p);
-  return j;
+using Mat36 = Eigen::Matrix<double, 3, 6>;
+
+/// J = [I, -[p]x] (the velocity of point p from the speeds [v, omega], own axes) is used by its
+/// blocks: products with J and J^T skip its identity and zeros. Each entry of a product with
+/// -[p]x sums at most two non-zero terms (one zero per row and column), so it is the same in
+/// any order: the partials are bit-identical to the full 3 x 6 products.
+Mat3 lever(const Vec3& p) noexcept { return -skew(p); }
+
+/// X J for J = [I, l]: [X, X l].
+Mat36 times_j(const Mat3& x, const Mat3& l) noexcept {
+  Mat36 out;
+  out.leftCols<3>() = x;
+  out.rightCols<3>().noalias() = x * l;
+  return out;
+}
+
+/// out += J^T X for J = [I, l] (J^T = [I; l^T]); X: 3 x cols.
+template <int Cols, typename Out>
+void add_jt_times(const Mat3& l, const Eigen::Matrix<double, 3, Cols>& x, Out&& out) noexcept {
+  out.template topRows<3>() += x;
+  out.template bottomRows<3>().noalias() += l.transpose() * x;
 }
 
 /// d(s)/d(y) = diag(R^T, E): from coordinate to speed-space displacements (K of y' = K^-1 z).
@@ -126,17 +141,18 @@ bool FreeBody::force_jacobians(const Vector& y, const Vector& z, Matrix& dq_dy,
   for (int i = 0; i < mount_count_; ++i) {
     const Mount& m = mounts_[static_cast<std::size_t>(i)];
     const MountForce& mf = side.forces[static_cast<std::size_t>(i)];
-    const Eigen::Matrix<double, 3, 6> j = point_jacobian(m.body_point);
-    const Eigen::Matrix<double, 3, 6> aj = a * j;  // d(deflection)/ds, chassis axes
+    const Mat3 l = lever(m.body_point);  // J = [I, l]
+    const Mat36 aj = times_j(a, l);      // d(deflection)/ds, chassis axes
     const Mat3 k = rates(m, mf);
     const Mat3& c = m.damping_matrix;
     // d(deflection rate)/ds: the chassis turning under the body, the body's own velocity turning
-    Eigen::Matrix<double, 3, 6> dd_ds = -wc * aj;
+    Mat36 dd_ds = -wc * aj;
     dd_ds.rightCols<3>() -= a * skew(body.velocity_mps + body.rate_radps.cross(m.body_point));
-    const Eigen::Matrix<double, 3, 6> df_ds = -k * aj - c * dd_ds;  // chassis axes
+    const Mat36 df_ds = -k * aj - c * dd_ds;  // chassis axes
     const Vec3 f_body = a.transpose() * mf.force_n;
-    dq_ds.noalias() += j.transpose() * (a.transpose() * df_ds);
-    dq_ds.rightCols<3>().noalias() += j.transpose() * skew(f_body);  // the force turns with it
+    const Mat36 df_body = a.transpose() * df_ds;
+    add_jt_times(l, df_body, dq_ds);                            // J^T A^T dF/ds
+    add_jt_times(l, Mat3(skew(f_body)), dq_ds.rightCols<3>());  // the force turns with it
     dq_dz.noalias() -= aj.transpose() * c * aj;
   }
   times_k(dq_ds, body.rot, body_rates_from_euler_rates(y(4), y(5)), dq_dy);
@@ -173,17 +189,25 @@ void FreeBody::chassis_jacobians(const RigidPose& chassis, Mat6& dq_ds,
     const MountForce& mf = side.forces[static_cast<std::size_t>(i)];
     const Vec3 pb = body.position_m + body.rot * m.body_point;
     const Vec3 vb = body.rot * (body.velocity_mps + body.rate_radps.cross(m.body_point));
-    const Vec3 body_point = rt * (pb - chassis.position_m);             // = rel + chassis point
-    const Eigen::Matrix<double, 3, 6> jd = point_jacobian(body_point);  // d(deflection) = -jd ds
-    Eigen::Matrix<double, 3, 6> dd_ds;
+    const Vec3 body_point = rt * (pb - chassis.position_m);  // = rel + chassis point
+    const Mat3 ld = lever(body_point);                       // d(deflection) = -jd ds, jd = [I, ld]
+    Mat36 dd_ds;
     dd_ds.leftCols<3>() = wc;
     dd_ds.rightCols<3>() = skew(rt * vb) - wc * skew(body_point);
     const Mat3 k = rates(m, mf);
     const Mat3& c = m.damping_matrix;
-    const Eigen::Matrix<double, 6, 3> jt = point_jacobian(m.chassis_point).transpose();
+    const Mat3 lc = lever(m.chassis_point);  // the chassis point's J = [I, lc]
     // the chassis gets F = K d + C d' (minus the force on the body)
-    dq_ds.noalias() += jt * (-k * jd + c * dd_ds);
-    dq_dz.noalias() -= jt * c * jd;
+    Mat36 jd;
+    jd << Mat3::Identity(), ld;
+    const Mat36 df = -k * jd + c * dd_ds;
+    add_jt_times(lc, df, dq_ds);
+    // dq_dz -= J_c^T C jd = [T, T ld] with T = J_c^T C
+    Eigen::Matrix<double, 6, 3> t;
+    t.topRows<3>() = c;
+    t.bottomRows<3>().noalias() = lc.transpose() * c;
+    dq_dz.leftCols<3>() -= t;
+    dq_dz.rightCols<3>().noalias() -= t * ld;
   }
 }
 

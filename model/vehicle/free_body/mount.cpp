@@ -23,6 +23,31 @@ Mount make_mount(const MountParams& m, const Vec3& body_position_m, double margi
   return out;
 }
 
+namespace {
+
+/// The deflection in the mount's axes: the body point's displacement from the chassis point,
+/// seen from the chassis, less the design offset.
+Vec3 deflection_m(const Mount& m, const RigidPose& chassis, const Vec3& pb,
+                  const Vec3& pc) noexcept {
+  const Vec3 rel = chassis.rot.transpose() * (pb - pc);
+  return m.axes.transpose() * (rel - m.design_offset);
+}
+
+}  // namespace
+
+double mount_beyond_stop_m(const Mount& m, const RigidPose& chassis,
+                           const RigidPose& body) noexcept {
+  const Vec3 pb = body.position_m + body.rot * m.body_point;
+  const Vec3 pc = chassis.position_m + chassis.rot * m.chassis_point;
+  const Vec3 d = deflection_m(m, chassis, pb, pc);
+  double beyond = -1;
+  for (int k = 0; k < 3; ++k) {
+    const double e = std::abs(d(k)) - m.clearance(k);
+    if (e > beyond) beyond = e;
+  }
+  return beyond;
+}
+
 MountForce mount_force(const Mount& m, const RigidPose& chassis, const RigidPose& body) noexcept {
   // the two points and their velocities, road frame
   const Vec3 pb = body.position_m + body.rot * m.body_point;

@@ -69,6 +69,11 @@ struct MountForce {
 [[nodiscard]] MountForce mount_force(const Mount& m, const RigidPose& chassis,
                                      const RigidPose& body) noexcept;
 
+/// mount_force(m, chassis, body).beyond_stop_m from the deflection alone (the same arithmetic,
+/// no velocities, forces or rates): the fault check's stop check after every step.
+[[nodiscard]] double mount_beyond_stop_m(const Mount& m, const RigidPose& chassis,
+                                         const RigidPose& body) noexcept;
+
 /// dF/dd of the mount in chassis axes: A diag(rate) A^T (A: the mount's axes).
 [[nodiscard]] inline Mat3 chassis_axes_matrix(const Mount& m, const Vec3& diag) noexcept {
   return m.axes * diag.asDiagonal() * m.axes.transpose();

@@ -15,9 +15,14 @@ struct SeatPoint {
   Eigen::Vector2d r, dr, ddr;
 };
 
-SeatPoint seat_point(const Eigen::Vector2d& local, double theta) {
-  const double c = std::cos(theta);
-  const double s = std::sin(theta);
+/// cos and sin of the seat's rotation theta, taken once for both seat points.
+struct SeatRotation {
+  double c, s;
+};
+
+SeatPoint seat_point(const Eigen::Vector2d& local, const SeatRotation& rot) {
+  const double c = rot.c;
+  const double s = rot.s;
   const Eigen::Vector2d r(c * local.x() - s * local.y(), s * local.x() + c * local.y());
   return {r, perp(r), -r};
 }
@@ -45,8 +50,9 @@ void add_springs(const LeafGeometry& g, const Coords& w, LeafTerms& out) {
 }
 
 /// The front eye E = X + R(theta) S1 + l_SA e(a_S1A) + l_AE e(a_AE) on the bushing K_b.
-void add_eye_bushing(const LeafGeometry& g, const Coords& w, LeafTerms& out) {
-  const SeatPoint s1 = seat_point(g.seat_front_m, w(kTheta));
+void add_eye_bushing(const LeafGeometry& g, const Coords& w, const SeatRotation& rot,
+                     LeafTerms& out) {
+  const SeatPoint s1 = seat_point(g.seat_front_m, rot);
   const Eigen::Vector2d inner = g.front_inner_m * dir(w(kFrontInner));
   const Eigen::Vector2d outer = g.front_outer_m * dir(w(kFrontOuter));
   out.eye_m = Eigen::Vector2d(w(kX), w(kZ)) + s1.r + inner + outer;
@@ -70,13 +76,14 @@ void add_eye_bushing(const LeafGeometry& g, const Coords& w, LeafTerms& out) {
 }
 
 /// g = S2 + rear links - shackle end; lambda . g into the Lagrangian.
-void add_shackle_closure(const LeafGeometry& g, const Coords& w, const Eigen::Vector2d& lambda,
-                         LeafTerms& out) {
-  const SeatPoint s2 = seat_point(g.seat_rear_m, w(kTheta));
+void add_shackle_closure(const LeafGeometry& g, const Coords& w, const SeatRotation& rot,
+                         const Eigen::Vector2d& lambda, LeafTerms& out) {
+  const SeatPoint s2 = seat_point(g.seat_rear_m, rot);
   const Eigen::Vector2d inner = g.rear_inner_m * dir(w(kRearInner));
   const Eigen::Vector2d outer = g.rear_outer_m * dir(w(kRearOuter));
   const double psi = w(kShackle);
-  const Eigen::Vector2d hang(std::sin(psi), std::cos(psi));  // pin minus shackle end, / l_sh
+  const double sin_psi = std::sin(psi), cos_psi = std::cos(psi);
+  const Eigen::Vector2d hang(sin_psi, cos_psi);  // pin minus shackle end, / l_sh
   const double l_sh = g.shackle_length_m;
   out.closure_m =
       Eigen::Vector2d(w(kX), w(kZ)) + s2.r + inner + outer - g.pin_frame_m + l_sh * hang;
@@ -87,7 +94,7 @@ void add_shackle_closure(const LeafGeometry& g, const Coords& w, const Eigen::Ve
   G.col(kTheta) = s2.dr;
   G.col(kRearInner) = perp(inner);
   G.col(kRearOuter) = perp(outer);
-  G.col(kShackle) = l_sh * Eigen::Vector2d(std::cos(psi), -std::sin(psi));
+  G.col(kShackle) = l_sh * Eigen::Vector2d(cos_psi, -sin_psi);
   out.gradient.noalias() += G.transpose() * lambda;
   out.hessian(kTheta, kTheta) += lambda.dot(s2.ddr);
   out.hessian(kRearInner, kRearInner) -= lambda.dot(inner);
@@ -110,8 +117,9 @@ void leaf_terms(const LeafGeometry& g, const Coords& w, const Eigen::Vector2d& l
   out.gradient.setZero();
   out.hessian.setZero();
   add_springs(g, w, out);
-  add_eye_bushing(g, w, out);
-  add_shackle_closure(g, w, lambda, out);
+  const SeatRotation rot{std::cos(w(kTheta)), std::sin(w(kTheta))};
+  add_eye_bushing(g, w, rot, out);
+  add_shackle_closure(g, w, rot, lambda, out);
 }
 
 }  // namespace rig::model::vehicle::leaf_spring

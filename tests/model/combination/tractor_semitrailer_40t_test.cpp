@@ -88,6 +88,7 @@ TEST(TractorSemitrailer40t, StaticAxleAndKingpinLoadsMatchTheHandCalculation) {
   ASSERT_EQ(p.units.size(), 2u);
   ASSERT_EQ(p.units[0].axles.size(), 3u);
   ASSERT_EQ(p.units[1].axles.size(), 3u);
+  EXPECT_TRUE(p.units[0].frame.enabled);  // frame torsion (issue 17 item 7): loads unchanged by it
   const double gcm = unit_mass_kg(p.units[0]) + unit_mass_kg(p.units[1]);
   std::printf("gross combination mass %.1f kg (tractor %.1f kg)\n", gcm, unit_mass_kg(p.units[0]));
   EXPECT_NEAR(gcm, 40000.0, 1e-6);

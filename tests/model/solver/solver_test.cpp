@@ -12,6 +12,7 @@
 #include "model/solver/coupled_stepper.h"
 #include "model/solver/finite_difference.h"
 #include "model/solver/force_element_stepper.h"
+#include "model/solver/kinematics_product.h"
 #include "model/solver/mechanical_stepper.h"
 #include "model/solver/sequential_stepper.h"
 #include "model/tire/tmeasy_force_element.h"
@@ -201,6 +202,50 @@ TEST(ArrowheadFactorization, BodySolveEqualsBodyRowsOfTheFullSolve) {
     Eigen::MatrixXd x_body(nb, 5);
     f.solve_body(b_body, x_body);
     EXPECT_LE((x_body - x.topRows(nb)).norm(), 1e-12 * x.topRows(nb).norm()) << nb;
+  }
+}
+
+// The chassis rows alone (a joint's forces, ChainStepper): b on the body's head rows, zero on
+// the leaves and on a tail. solve_body pads the tail with zeros and gives exactly (bit for bit)
+// the head rows of the full solve, on the 6-DOF path, the 7-DOF path (a frame's twist as the
+// tail) and the general one; and they solve A x = [b; 0] as dense LU does.
+TEST(ArrowheadFactorization, HeadRowsSolveEqualsTheFullSolveBitForBit) {
+  for (const ArrowheadPartition& p :
+       {ArrowheadPartition{6, {2, 2, 2}}, ArrowheadPartition{6, {2, 2, 2}, 1},
+        ArrowheadPartition{6, {2, 2}, 1}, ArrowheadPartition{6, {5, 4}, 2}}) {
+    const Eigen::MatrixXd a = random_arrowhead(p, 23);
+    ArrowheadFactorization f(p);
+    EXPECT_EQ(f.body_head_size(), 6);
+    f.compute(a);
+    const Eigen::MatrixXd b_head = Eigen::MatrixXd::Random(6, 4);
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(p.total_size(), 4);
+    b.topRows(6) = b_head;
+    Eigen::MatrixXd x(p.total_size(), 4);
+    f.solve(b, x);
+    Eigen::MatrixXd x_head(6, 4);
+    f.solve_body(b_head, x_head);
+    EXPECT_EQ(x_head, x.topRows(6)) << p.body_tail_size;
+    const Eigen::MatrixXd x_dense = a.partialPivLu().solve(b);
+    EXPECT_LT((x - x_dense).norm(), 1e-12 * x_dense.norm()) << p.body_tail_size;
+  }
+}
+
+// M_VI -= h^2 dq/dy K^-1 for K^-1 = diag(R, E, I) (the framework's): the structured product
+// equals Eigen's general product bit for bit (the sums in the same order, K's zeros left out).
+TEST(KinematicsProduct, EqualsTheGeneralProductBitForBit) {
+  for (Eigen::Index n = 6; n <= 24; ++n) {
+    std::srand(static_cast<unsigned>(n));
+    const Eigen::MatrixXd dq_dy = Eigen::MatrixXd::Random(n, n) * 1e5;
+    Eigen::MatrixXd k_inv = Eigen::MatrixXd::Identity(n, n);
+    k_inv.topLeftCorner(3, 3) = Eigen::Matrix3d::Random();
+    k_inv.block(3, 3, 3, 3) = Eigen::Matrix3d::Random();
+    const Eigen::MatrixXd m0 = Eigen::MatrixXd::Random(n, n) * 1e3;
+    const double h = 1e-3;
+    Eigen::MatrixXd general = m0, structured = m0;
+    general.noalias() -= (h * h) * dq_dy * k_inv;
+    subtract_dq_dy_k_inv(6, -(h * h), dq_dy, k_inv, structured);
+    EXPECT_EQ(structured, general) << n;
+    EXPECT_LT((structured - (m0 - h * h * dq_dy * k_inv)).norm(), 1e-12 * m0.norm()) << n;
   }
 }
 
