@@ -297,6 +297,7 @@ void read_leaf_balance(StrictTable& t, const VehicleParams& p,
                   "a leaf balance carries two rigid axles on leaf springs "
                   "([axle.leaf_spring])");
   g.pivot_x_m = t.number_in("pivot_x_m", rear.position_x_m, front.position_x_m);
+  g.torque_rods = t.boolean("torque_rods", false);
   try {
     (void)model::vehicle::leaf_balance_geometry(front, rear, g.pivot_x_m);
   } catch (const std::invalid_argument& e) {

@@ -25,6 +25,12 @@ bool within_tolerance(const LeafBalance::Vector6d& r) {
          std::abs(r(4)) <= kMomentTolerance && std::abs(r(5)) <= kMomentTolerance;
 }
 
+bool rods_of(const VehicleParams& p, int front_axle) {
+  for (const LoadSharingParams& g : p.load_sharing)
+    if (g.kind == LoadSharingKind::kLeafBalance && g.first_axle == front_axle) return g.torque_rods;
+  return false;
+}
+
 }  // namespace
 
 LeafBalance::LeafBalance(const VehicleParams& p, int front_axle, double pivot_x_m,
@@ -34,6 +40,7 @@ LeafBalance::LeafBalance(const VehicleParams& p, int front_axle, double pivot_x_
       geometry_(leaf_balance_geometry(p.axles[static_cast<std::size_t>(front_axle)],
                                       p.axles[static_cast<std::size_t>(front_axle) + 1],
                                       pivot_x_m)),
+      torque_rods_(rods_of(p, front_axle)),
       state_(&state) {
   // front leaf: its pin on the rocker, turned about its eye; rear leaf: its eye on the rocker,
   // turned about its pin. alpha = dz / (x_moving - x_fixed), dz = beta x (x from the pivot)
@@ -67,7 +74,8 @@ void LeafBalance::take(int role, double heave_m, double roll_rad,
   LeafBalanceState& s = *state_;
   const auto k = static_cast<Eigen::Index>(2 * role);
   s.next_at.segment<2>(k) = Eigen::Vector2d(heave_m, roll_rad);
-  s.next_load.segment<2>(k) = Eigen::Vector2d(load.force_x_n, load.moment_y_nm);
+  s.next_load.segment<2>(k) =
+      torque_rods_ ? Eigen::Vector2d::Zero() : Eigen::Vector2d(load.force_x_n, load.moment_y_nm);
   if (role == 1) balance(s.next_at, s.next_load);
 }
 

@@ -28,6 +28,14 @@
 /// (axle 1 <-> axle 2, through the rockers) is left out of the step's Jacobian - it would couple
 /// two leaves of the arrowhead - as load_sharing's cross terms are: the forces are exact, only
 /// the Newton step of the coupled integrator sees a slightly softer tandem. No allocation.
+///
+/// Without torque rods the leaves take the housings' brake and drive reactions, and the rocker
+/// passes them on: a housing moment T and fore-aft force F_x (at h below the eyes) change the
+/// front leaf's pin force by (T - h F_x)/L_1 and the rear leaf's eye force by -(T - h F_x)/L_2,
+/// so braking moves load from the first axle to the second, W_2 - W_1 = 2 sum (T - h F_x)/L per
+/// side (with L/2 seats) - on a lightly loaded solo tandem enough to lift the first axle.
+/// `torque_rods = true`: rods locate the axles and take those loads to the frame (the framework
+/// passes the wheels' forces to the body as ever); the leaves balance no housing load.
 
 #include <array>
 
@@ -42,7 +50,7 @@ namespace rig::model::vehicle {
 
 class LeafBalance {
  public:
-  static constexpr int kMaxEvaluations = 4;
+  static constexpr int kMaxEvaluations = 3;  // as a single leaf axle's balance
   using Vector6d = LeafBalanceState::Vector6d;
   using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
@@ -82,6 +90,7 @@ class LeafBalance {
   std::array<const LeafAxleSuspension*, 2> axle_{};
   LeafBalanceGeometry geometry_;
   std::array<double, 2> turn_per_beta_{};  ///< alpha = this x beta, per leaf (front, rear)
+  bool torque_rods_ = false;               ///< the housings' loads go to the frame through rods
   std::array<double, 2> end_x_m_{};        ///< each leaf's rocker end from the pivot (+ ahead)
   LeafBalanceState rest_;
   LeafBalanceState* state_;

@@ -309,6 +309,9 @@ struct LoadSharingParams {
   int first_axle = 0;  ///< index from 0, front to rear
   int axle_count = 2;
   double pivot_x_m = 0;  ///< walking beam, leaf balance: the pivot (from the CG, forward +)
+  /// Leaf balance: torque rods locate the axles, taking their housings' fore-aft force and pitch
+  /// moment (brake and drive reactions) to the frame; the leaves carry the vertical load only.
+  bool torque_rods = false;
 };
 
 struct VehicleParams {

@@ -3,9 +3,13 @@
 // partials against finite differences; the leaf tractor's static axle loads against the hand
 // calculation (tests/support/static_axle_loads.h: the rocker's statics from the leaves' s/L and
 // its arms, the steer axle and the tandem by the lever rule), a centred rocker on equal leaves
-// sharing equally, an off-centre pivot moving the split as its arms say, whatever the rates.
+// sharing equally, an off-centre pivot moving the split as its arms say, whatever the rates;
+// the rocker's geometry check; braking (the tandem keeps its load, the balance's evaluations and
+// the leaves' Newton in their limits, no allocation).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +17,7 @@
 #include "model/vehicle/leaf_balance.h"
 #include "model/vehicle/leaf_spring/turned_leaf.h"
 #include "model/vehicle/vehicle_model.h"
+#include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
 #include "tests/support/static_axle_loads.h"
 
@@ -21,21 +26,14 @@ namespace {
 
 namespace ls = leaf_spring;
 
-/// The leaf tractor with its tandem on a rocker: the tandem's leaves 1.05 m eye to eye (so the
-/// front leaf's pin lies ahead of the rear leaf's eye), the pivot between them (+ offset_m).
+/// The leaf tractor (its tandem on a rocker per side: 1.05 m leaves, so that the front leaf's
+/// pin lies ahead of the rear leaf's eye, the pivot midway), the pivot moved by offset_m.
 VehicleParams balanced_tractor(double offset_m = 0) {
   VehicleParams p =
       io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/tractor-6x4-leaf.toml");
-  for (std::size_t a = 1; a < 3; ++a) {
-    ls::LeafSpringParams& l = p.axles[a].leaf_spring;
-    l.eye_to_eye_m = 1.05;
-    l.seat_from_front_eye_m = 0.525;
-    l.front_bending_stiffness_nm2 = l.rear_bending_stiffness_nm2 = 5000.0;
-    p.axles[a].spring_stiffness_npm = 329000.0;
-  }
-  const LeafBalanceGeometry g = leaf_balance_geometry(p.axles[1], p.axles[2], -2.3);
-  p.load_sharing.push_back(
-      {LoadSharingKind::kLeafBalance, 1, 2, 0.5 * (g.front_end_x_m + g.rear_end_x_m) + offset_m});
+  EXPECT_EQ(p.load_sharing.size(), 1u);
+  EXPECT_EQ(p.load_sharing[0].kind, LoadSharingKind::kLeafBalance);
+  p.load_sharing[0].pivot_x_m += offset_m;
   return p;
 }
 
@@ -195,6 +193,96 @@ TEST(LeafBalance, CondensedStiffnessMatchesFiniteDifferences) {
   // the rockers couple the axles: raising the front axle loads the rear one (the rear leaf's
   // eye pushed down), about as much as itself (a centred rocker shares the heave)
   EXPECT_LT(fd(2, 0), 0.5 * fd(0, 0));
+}
+
+TEST(LeafBalance, TheRockersEndsMustBeOnEitherSideOfThePivot) {
+  VehicleParams p = balanced_tractor();
+  const LeafBalanceGeometry g = leaf_balance_geometry(p.axles[1], p.axles[2], -2.3074875);
+  // the front leaf's pin 15 mm behind its rear eye (the shackle at -0.1 rad), the rear leaf's eye
+  // at its seat_from_front_eye ahead of the axle: arms 0.1425 m, shares 1/2
+  EXPECT_NEAR(g.front_end_x_m, -1.625 - 0.525 + 0.15 * std::sin(-0.10), 1e-9);
+  EXPECT_NEAR(g.rear_end_x_m, -2.975 + 0.525, 1e-9);
+  EXPECT_NEAR(g.front_arm_m, 0.1425, 2e-5);
+  EXPECT_NEAR(g.rear_arm_m, 0.1425, 2e-5);
+  EXPECT_EQ(g.front_share, 0.5);
+  EXPECT_EQ(g.rear_share, 0.5);
+  EXPECT_THROW((void)leaf_balance_geometry(p.axles[1], p.axles[2], -2.1), std::invalid_argument);
+  p.axles[1].leaf_spring.eye_to_eye_m = 1.65;  // the leaves overlap: pin behind the eye
+  p.axles[1].leaf_spring.seat_from_front_eye_m = 0.825;
+  p.axles[2].leaf_spring.eye_to_eye_m = 1.65;
+  p.axles[2].leaf_spring.seat_from_front_eye_m = 0.825;
+  EXPECT_THROW((void)axle_shares(p), std::invalid_argument);
+}
+
+// Braking from 60 km/h at 3 bar (~0.3 g) to stand-still: both tandem axles keep their load (solo
+// without the rocker the last one lifted off), the rockers balanced in every step, the group's
+// evaluations and the leaves' Newton in their limits, no allocation.
+TEST(LeafBalance, BrakingTandemKeepsBothAxlesLoadedWithinTheLimits) {
+  const VehicleParams p = balanced_tractor();
+  VehicleModel m(p, 1e-3);
+  Signals s = test::all_driver_inputs();
+  (void)m.settle(16.67);
+  s[Signal::kThrottlePedal] = 0.0;
+  for (int k = 0; k < 500; ++k) ASSERT_EQ(m.step(s), StepStatus::kOk);  // warm, outside
+  const double static2 = axle_load_n(m, 1), static3 = axle_load_n(m, 2);
+  const LeafBalanceState before = m.state().leaf_balances[0];
+  const double heave_difference_before = m.state().framework_y(8) - m.state().framework_y(10);
+  test::AllocationCounter counter;
+  Eigen::internal::set_is_malloc_allowed(false);
+  int most_evaluations = 0, most_iterations = 0;
+  double worst_residual = 0, least2 = 1e9, least3 = 1e9;
+  double sum2 = 0, sum3 = 0, sum_beta = 0, sum_ax = 0, sum_dh = 0;
+  int n = 0;
+  for (int k = 0; k < 5000; ++k) {
+    const double ramp = std::min(1.0, k / 300.0);
+    s[Signal::kBrakePressureFront] = 3e5 * ramp;
+    s[Signal::kBrakePressureRear] = 3e5 * ramp;
+    ASSERT_EQ(m.step(s), StepStatus::kOk) << "t = " << m.time_s();
+    const LeafBalanceState& b = m.state().leaf_balances[0];
+    most_evaluations = std::max(most_evaluations, b.evaluations);
+    worst_residual = std::max(
+        {worst_residual, std::abs(b.moment_residual_nm[0]), std::abs(b.moment_residual_nm[1])});
+    for (int a = 1; a < 3; ++a) {
+      const LeafAxleState& l = m.state().leaf_axles[static_cast<std::size_t>(a)];
+      most_iterations = std::max({most_iterations, l.iterations[0], l.iterations[1]});
+    }
+    const double l2 = axle_load_n(m, 1), l3 = axle_load_n(m, 2);
+    least2 = std::min(least2, l2);
+    least3 = std::min(least3, l3);
+    if (k >= 1000 && k < 3000) {  // steady braking
+      sum2 += l2;
+      sum3 += l3;
+      sum_beta += 0.5 * (b.u(4) + b.u(5));
+      sum_ax += m.state().acceleration_mps2.x();
+      sum_dh += m.state().framework_y(8) - m.state().framework_y(10);
+      ++n;
+    }
+  }
+  Eigen::internal::set_is_malloc_allowed(true);
+  EXPECT_EQ(counter.count(), 0u);
+  std::printf(
+      "static tandem %.0f / %.0f N; braking (a_x %.2f m/s^2) %.0f / %.0f N, rocker "
+      "%.2f mrad; least %.0f / %.0f N\n",
+      static2, static3, sum_ax / n, sum2 / n, sum3 / n, 1e3 * sum_beta / n, least2, least3);
+  std::printf("rocker residual <= %.3f N m, evaluations <= %d, leaf iterations <= %d\n",
+              worst_residual, most_evaluations, most_iterations);
+  EXPECT_GT(least2, 0.3 * static2);  // no lift-off
+  EXPECT_GT(least3, 0.3 * static3);
+  // the hand estimate (torque rods: no housing load on the leaves): the rockers keep the four
+  // leaves' loads equal, so the two axles' loads stay within their unsprung masses' inertia of
+  // each other; the rocker turns by the axles' heave difference over its arm - the leaves
+  // deflect alike, so the pin and the eye take up h_1 - h_2: a (beta_1 - beta_0) = dh_1 - dh_2
+  // (first order; the frame's nose-down pitch p gives dh_1 - dh_2 = 1.35 m p)
+  EXPECT_NEAR(sum3 / n, sum2 / n, 0.02 * sum2 / n);
+  const double arm = 0.1425;  // the rocker's arms (the file's geometry, above)
+  const double beta_change = sum_beta / n - 0.5 * (before.u(4) + before.u(5));
+  const double hand_beta = (sum_dh / n - heave_difference_before) / arm;
+  std::printf("rocker turned %.3f mrad; hand (dh_1 - dh_2) / a %.3f mrad\n", 1e3 * beta_change,
+              1e3 * hand_beta);
+  EXPECT_NEAR(beta_change, hand_beta, 0.1 * std::abs(hand_beta) + 1e-4);
+  EXPECT_LE(worst_residual, 0.5);
+  EXPECT_LE(most_evaluations, LeafBalance::kMaxEvaluations);
+  EXPECT_LE(most_iterations, LeafBalance::kMaxEvaluations * 4);
 }
 
 }  // namespace
