@@ -72,7 +72,7 @@ LeafBalance::LeafBalance(const VehicleParams& p, int front_axle, double pivot_x_
 void LeafBalance::take(int role, double heave_m, double roll_rad,
                        const AxleHousingLoad& load) const noexcept {
   LeafBalanceState& s = *state_;
-  const auto k = static_cast<Eigen::Index>(2 * role);
+  const Eigen::Index k = 2 * static_cast<Eigen::Index>(role);
   s.next_at.segment<2>(k) = Eigen::Vector2d(heave_m, roll_rad);
   s.next_load.segment<2>(k) =
       torque_rods_ ? Eigen::Vector2d::Zero() : Eigen::Vector2d(load.force_x_n, load.moment_y_nm);
@@ -84,10 +84,10 @@ LeafBalance::Group LeafBalance::evaluate(const Vector6d& u, const Eigen::Vector4
   Group g;
   g.q.setZero();
   g.stiffness.setZero();
-  for (int a = 0; a < 2; ++a) {
+  for (Eigen::Index a = 0; a < 2; ++a) {
     const LeafAxleSuspension& axle = *axle_[static_cast<std::size_t>(a)];
     LeafAxleState& slot = axle.slot();
-    for (int side = 0; side < 2; ++side) {
+    for (Eigen::Index side = 0; side < 2; ++side) {
       const double lever = side == 0 ? axle.half_track_m() : -axle.half_track_m();
       // (x, z, pitch, alpha) = M (u, e) + (0, rest height, 0, 0)
       Eigen::Matrix<double, 4, 10> m = Eigen::Matrix<double, 4, 10>::Zero();
@@ -97,7 +97,8 @@ LeafBalance::Group LeafBalance::evaluate(const Vector6d& u, const Eigen::Vector4
       m(2, 2 * a + 1) = 1;
       m(3, 4 + side) = turn_per_beta_[static_cast<std::size_t>(a)];
       const Eigen::Vector4d pose =
-          m * (Vector10d() << u, e).finished() + Eigen::Vector4d(0, axle.rest_seat_z_m(side), 0, 0);
+          m * (Vector10d() << u, e).finished() +
+          Eigen::Vector4d(0, axle.rest_seat_z_m(static_cast<int>(side)), 0, 0);
       const ls::TurnedLeafForces t = ls::evaluate_turned(
           axle.leaf(), pose.head<3>(), pose(3), a == 0 ? ls::MovingEnd::kPin : ls::MovingEnd::kEye,
           slot.leaf[static_cast<std::size_t>(side)]);
@@ -166,7 +167,7 @@ void LeafBalance::finish(const Group& g, const Vector6d& u, const Vector6d& step
   s.at = e;
   s.load = load;
   s.moment_residual_nm = {g.residual(4), g.residual(5)};
-  for (int a = 0; a < 2; ++a) {
+  for (Eigen::Index a = 0; a < 2; ++a) {
     LeafAxleState& slot = axle_[static_cast<std::size_t>(a)]->slot();
     slot.x_m = s.u(2 * a);
     slot.pitch_rad = s.u(2 * a + 1);
