@@ -8,10 +8,10 @@
 
 namespace rig::model {
 
-inline constexpr int kMaxUnits = 4;           ///< vehicles in a combination
-inline constexpr int kMaxWheelsPerUnit = 12;  ///< up to 6 axles with 2 wheels
-inline constexpr int kMaxJoints = 3;          ///< couplings between units
-inline constexpr int kMaxDifferentials = 8;   ///< of a drive train (model/vehicle/differential)
+inline constexpr int kMaxUnits = 4;              ///< vehicles in a combination
+inline constexpr int kMaxWheelsPerUnit = 12;     ///< up to 6 axles with 2 wheels
+inline constexpr int kMaxJoints = 3;             ///< couplings between units
+inline constexpr int kMaxDifferentials = 8;      ///< of a drive train (model/vehicle/differential)
 inline constexpr int kMaxFreeBodiesPerUnit = 4;  ///< cab, engine, seat, ... (`[[free_body]]`)
 
 struct WheelReport {
@@ -55,6 +55,9 @@ struct WheelReport {
   double leaf_front_link_rad = 0;
   double leaf_rear_link_rad = 0;
   double leaf_iterations = 0;
+  /// A leaf balance's axle (model/vehicle/leaf_balance.h), else 0: this side's rocker angle from
+  /// level [rad, front end up +], the same on both axles of the tandem.
+  double leaf_rocker_rad = 0;
   /// 1: slip_x, slip_y mean a slip (the wheel moves at least slip_mask_speed_mps); 0: stand-still
   /// or creeping, the raw values are kept but are not slips an ECU should act on
   std::int8_t slip_valid = 1;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 #include "io/config/differential_config.h"
@@ -12,6 +13,7 @@
 #include "io/config/leaf_spring_config.h"
 #include "model/report.h"
 #include "model/vehicle/leaf_axle_state.h"
+#include "model/vehicle/leaf_balance_geometry.h"
 #include "model/vehicle/rigid_axle.h"
 
 namespace rig::io::config {
@@ -283,12 +285,33 @@ AxleParams read_axle(StrictTable t, const std::map<std::string, TireParams>& tir
   return a;
 }
 
+/// [[load_sharing]] kind = "leaf_balance": two leaf-sprung rigid axles, the rocker's pivot between
+/// the front leaf's shackle pin and the rear leaf's front eye (model/vehicle/leaf_balance.h).
+void read_leaf_balance(StrictTable& t, const VehicleParams& p,
+                       model::vehicle::LoadSharingParams& g) {
+  if (g.axle_count != 2) throw t.error("axles", "a leaf balance carries two axles");
+  const auto& front = p.axles[static_cast<std::size_t>(g.first_axle)];
+  const auto& rear = p.axles[static_cast<std::size_t>(g.first_axle) + 1];
+  if (!front.has_leaf_spring || !rear.has_leaf_spring)
+    throw t.error("axles",
+                  "a leaf balance carries two rigid axles on leaf springs "
+                  "([axle.leaf_spring])");
+  g.pivot_x_m = t.number_in("pivot_x_m", rear.position_x_m, front.position_x_m);
+  g.torque_rods = t.boolean("torque_rods", false);
+  try {
+    (void)model::vehicle::leaf_balance_geometry(front, rear, g.pivot_x_m);
+  } catch (const std::invalid_argument& e) {
+    throw t.error("pivot_x_m", e.what());
+  }
+}
+
 /// [[load_sharing]]: a bogie of adjacent axles sharing its load (model/vehicle/load_sharing.h).
 model::vehicle::LoadSharingParams read_load_sharing(StrictTable t, const VehicleParams& p) {
   model::vehicle::LoadSharingParams g;
-  const std::string kind = t.choice("kind", "", {"air_springs", "walking_beam"});
-  g.kind = kind == "walking_beam" ? model::vehicle::LoadSharingKind::kWalkingBeam
-                                  : model::vehicle::LoadSharingKind::kAirSprings;
+  const std::string kind = t.choice("kind", "", {"air_springs", "walking_beam", "leaf_balance"});
+  g.kind = kind == "walking_beam"   ? model::vehicle::LoadSharingKind::kWalkingBeam
+           : kind == "leaf_balance" ? model::vehicle::LoadSharingKind::kLeafBalance
+                                    : model::vehicle::LoadSharingKind::kAirSprings;
   const std::vector<long long> axles = t.integers("axles", model::kMaxWheelsPerUnit / 2);
   const auto n = static_cast<long long>(p.axles.size());
   for (std::size_t i = 0; i < axles.size(); ++i) {
@@ -299,6 +322,11 @@ model::vehicle::LoadSharingParams read_load_sharing(StrictTable t, const Vehicle
   if (axles.size() < 2) throw t.error("axles", "a bogie shares its load among 2 or more axles");
   g.first_axle = static_cast<int>(axles.front() - 1);
   g.axle_count = static_cast<int>(axles.size());
+  if (g.kind == model::vehicle::LoadSharingKind::kLeafBalance) {
+    read_leaf_balance(t, p, g);
+    t.finish();
+    return g;
+  }
   for (long long a : axles) {
     if (p.axles[static_cast<std::size_t>(a - 1)].kind != model::vehicle::AxleKind::kIndependent)
       throw t.error("axles", "axle " + std::to_string(a) +

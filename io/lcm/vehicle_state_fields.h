@@ -113,6 +113,8 @@ struct VehicleStateFields {
        &S::wheel_leaf_rear_link_rad, "leaf_rear_link_rad"},
       {"wheel_leaf_iterations", "1", member<&W::leaf_iterations>, &S::wheel_leaf_iterations,
        "leaf_iterations"},
+      {"wheel_leaf_rocker_rad", "rad", member<&W::leaf_rocker_rad>, &S::wheel_leaf_rocker_rad,
+       "leaf_rocker_rad"},
   };
 
   /// Per wheel, flags: 1 valid, 0 not.
@@ -214,8 +216,7 @@ struct VehicleStateFields {
   /// timing (io::CycleTiming), the group counts and each wheel's unit.
   static constexpr std::string_view kFrame[] = {
       "sim_time_s", "monotonic_ns", "cycle",      "lateness_ns", "compute_ns", "deadline_miss",
-      "num_units",  "num_wheels",   "wheel_unit", "num_joints",  "num_diffs",
-      "num_bodies",
+      "num_units",  "num_wheels",   "wheel_unit", "num_joints",  "num_diffs",  "num_bodies",
   };
 };
 

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/vehicle/leaf_balance.h"
+
 namespace rig::model::vehicle {
 namespace {
 
@@ -101,6 +103,10 @@ void LeafAxleSuspension::balance(double heave_m, double roll_rad, const Eigen::V
 void LeafAxleSuspension::forces_under_load(double heave_m, double roll_rad, double heave_rate_mps,
                                            double roll_rate_radps, const AxleHousingLoad& load,
                                            AxleSuspensionForces& out) const noexcept {
+  if (group_ != nullptr) {  // balanced with its tandem partner in prepare(): at `at` exactly
+    forces(heave_m, roll_rad, heave_rate_mps, roll_rate_radps, out);
+    return;
+  }
   others_.forces(heave_m, roll_rad, heave_rate_mps, roll_rate_radps, out);
   LeafAxleState& s = *state_;
   balance(heave_m, roll_rad, Eigen::Vector2d(load.force_x_n, load.moment_y_nm), s);
@@ -108,6 +114,11 @@ void LeafAxleSuspension::forces_under_load(double heave_m, double roll_rad, doub
   out.dq_dy += s.dq_dy;
   out.spring_n[0] += s.spring_n[0];
   out.spring_n[1] += s.spring_n[1];
+}
+
+void LeafAxleSuspension::prepare(double heave_m, double roll_rad,
+                                 const AxleHousingLoad& load) const noexcept {
+  if (group_ != nullptr) group_->take(role_, heave_m, roll_rad, load);
 }
 
 void LeafAxleSuspension::forces(double heave_m, double roll_rad, double heave_rate_mps,

@@ -33,6 +33,8 @@
 
 namespace rig::model::vehicle {
 
+class LeafBalance;
+
 class LeafAxleSuspension final : public AxleSuspension {
  public:
   static constexpr int kMaxBalanceEvaluations = 3;
@@ -48,6 +50,20 @@ class LeafAxleSuspension final : public AxleSuspension {
   void forces_under_load(double heave_m, double roll_rad, double heave_rate_mps,
                          double roll_rate_radps, const AxleHousingLoad& load,
                          AxleSuspensionForces& out) const noexcept override;
+
+  /// In a leaf balance (leaf_balance.h) as its front (role 0) or rear (1) axle: the group
+  /// balances both axles in prepare(), forces_under_load() then hands on its result.
+  void join(const LeafBalance& group, int role) noexcept {
+    group_ = &group;
+    role_ = role;
+  }
+  void prepare(double heave_m, double roll_rad,
+               const AxleHousingLoad& load) const noexcept override;
+  /// The slot in VehicleState (the group writes it), the leaves' half spacing.
+  [[nodiscard]] LeafAxleState& slot() const noexcept { return *state_; }
+  [[nodiscard]] double half_track_m() const noexcept { return half_track_m_; }
+  /// Make the slot's state the rest (the group settles its rockers after construction).
+  void set_rest(const LeafAxleState& rest) noexcept { rest_ = rest; }
 
   /// The state at rest (design height, no housing load): a reset copies it into the slot.
   [[nodiscard]] const LeafAxleState& rest_state() const noexcept { return rest_; }
@@ -81,6 +97,8 @@ class LeafAxleSuspension final : public AxleSuspension {
   std::array<double, 2> rest_seat_z_m_{};
   LeafAxleState rest_;
   LeafAxleState* state_;  ///< its slot in VehicleState (outlives the element)
+  const LeafBalance* group_ = nullptr;
+  int role_ = 0;
 };
 
 }  // namespace rig::model::vehicle

@@ -5,6 +5,8 @@
 
 #include <Eigen/LU>
 
+#include "model/vehicle/leaf_balance_geometry.h"
+
 namespace rig::model::vehicle {
 namespace {
 
@@ -13,6 +15,20 @@ void check_group(const VehicleParams& p, const LoadSharingParams& g, const AxleS
   const auto n = static_cast<int>(p.axles.size());
   if (g.axle_count < 2 || g.first_axle < 0 || g.first_axle + g.axle_count > n)
     throw std::invalid_argument(what + "needs two or more of the vehicle's axles");
+  if (g.kind == LoadSharingKind::kLeafBalance) {  // two leaf-sprung rigid axles
+    if (g.axle_count != 2) throw std::invalid_argument(what + "a leaf balance carries two axles");
+    for (int a = g.first_axle; a < g.first_axle + 2; ++a)
+      if (s[static_cast<std::size_t>(a)].group >= 0)
+        throw std::invalid_argument(what + "axle " + std::to_string(a + 1) +
+                                    " is in another group already");
+    try {
+      (void)leaf_balance_geometry(p.axles[static_cast<std::size_t>(g.first_axle)],
+                                  p.axles[static_cast<std::size_t>(g.first_axle) + 1], g.pivot_x_m);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(what + e.what());
+    }
+    return;
+  }
   for (int a = g.first_axle; a < g.first_axle + g.axle_count; ++a) {
     if (p.axles[static_cast<std::size_t>(a)].kind != AxleKind::kIndependent)
       throw std::invalid_argument(what + "axle " + std::to_string(a + 1) +
@@ -50,6 +66,13 @@ AxleShares axle_shares(const VehicleParams& p) {
       const double x2 = p.axles[static_cast<std::size_t>(g.first_axle) + 1].position_x_m;
       s[static_cast<std::size_t>(g.first_axle)].weight = (g.pivot_x_m - x2) / (x1 - x2);
       s[static_cast<std::size_t>(g.first_axle) + 1].weight = (x1 - g.pivot_x_m) / (x1 - x2);
+    }
+    if (g.kind == LoadSharingKind::kLeafBalance) {  // W_1 share_1 a_1 = W_2 share_2 a_2
+      const auto f = static_cast<std::size_t>(g.first_axle);
+      const LeafBalanceGeometry lb = leaf_balance_geometry(p.axles[f], p.axles[f + 1], g.pivot_x_m);
+      const double front = lb.rear_share * lb.rear_arm_m, rear = lb.front_share * lb.front_arm_m;
+      s[f].weight = front / (front + rear);
+      s[f + 1].weight = rear / (front + rear);
     }
     for (int j = 0; j < g.axle_count; ++j) {
       const auto k = static_cast<std::size_t>(g.first_axle) + static_cast<std::size_t>(j);

@@ -13,6 +13,11 @@
 /// w_2 = (x_1 - x_p)/(x_1 - x_2). The difference between the axles' travels is free (held by the
 /// tires alone), as on the real beam or connected bags (the levelling valves' slow control of the
 /// mean height is not modelled). Each axle keeps its own dampers, stops and anti-roll bar.
+///
+/// A leaf balance (two leaf-sprung rigid axles, a rocker between their leaves: leaf_balance.h)
+/// takes part here by its static split only (the framework's preloads, the static heave and
+/// pitch): w_1 : w_2 = rear_share a_2 : front_share a_1 (leaf_balance_geometry.h), its rate the
+/// two axles' spring_stiffness_npm; its forces come from the leaves and rockers themselves.
 
 #include <array>
 
@@ -38,7 +43,8 @@ using AxleShares = std::array<AxleShare, kMaxAxles>;
 
 /// The shares of every axle (all -1 without groups). Throws std::invalid_argument on a group that
 /// is not a run of adjacent independent axles, overlaps another, or a walking beam that does not
-/// have two axles with its pivot between them.
+/// have two axles with its pivot between them; a leaf balance not on two leaf-sprung axles with
+/// the rocker's ends on either side of its pivot.
 [[nodiscard]] AxleShares axle_shares(const VehicleParams& p);
 
 /// The sprung mass's static heave and pitch on its springs (each axle on its own 2 k at its x, each

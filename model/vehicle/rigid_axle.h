@@ -123,6 +123,15 @@ class AxleSuspension {
     (void)load;
     forces(heave_m, roll_rad, heave_rate_mps, roll_rate_radps, out);
   }
+  /// Told every rigid axle's (heave, roll) and housing load, in axle order, before any
+  /// forces_under_load of the same evaluation: elements coupling axles (the leaf balance,
+  /// leaf_balance.h) balance their group here. The default does nothing.
+  virtual void prepare(double heave_m, double roll_rad,
+                       const AxleHousingLoad& load) const noexcept {
+    (void)heave_m;
+    (void)roll_rad;
+    (void)load;
+  }
 };
 
 /// Two preloaded springs at +-spring_track/2 (wheel-rate keys of the axle: spring_stiffness_npm

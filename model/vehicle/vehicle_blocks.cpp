@@ -120,11 +120,35 @@ VehicleBlocks::VehicleBlocks(const VehicleParams& p, VehicleState& state,
         state.leaf_axles[leaf_axles_.size()]));
     framework_.set_axle_suspension(static_cast<int>(a), *leaf_axles_.back());
   }
+  build_leaf_balances(p, state);
   // free bodies (subsystems of eq. 2 at the chassis' y_V(k)); their mounts act on the framework
   if (!p.free_bodies.empty()) {
     free_bodies_ = std::make_unique<FreeBodies>(p, framework_.road(), state, work);
     framework_.attach_free_bodies(free_bodies_.get());
     for (int i = 0; i < free_bodies_->count(); ++i) sequence_.add_stage(free_bodies_->stage(i));
+  }
+}
+
+void VehicleBlocks::build_leaf_balances(const VehicleParams& p, VehicleState& state) {
+  const auto element = [this](int axle) -> LeafAxleSuspension& {
+    for (const auto& l : leaf_axles_)
+      if (l->rest_state().axle == axle) return *l;
+    throw std::invalid_argument("vehicle: a leaf balance's axle " + std::to_string(axle + 1) +
+                                " has no leaf springs");
+  };
+  for (const LoadSharingParams& g : p.load_sharing) {
+    if (g.kind != LoadSharingKind::kLeafBalance) continue;
+    if (leaf_balances_.size() >= static_cast<std::size_t>(kMaxLeafBalances))
+      throw std::invalid_argument("vehicle: at most " + std::to_string(kMaxLeafBalances) +
+                                  " leaf balance");
+    LeafAxleSuspension& front = element(g.first_axle);
+    LeafAxleSuspension& rear = element(g.first_axle + 1);
+    leaf_balances_.push_back(std::make_unique<LeafBalance>(
+        p, g.first_axle, g.pivot_x_m, front, rear, state.leaf_balances[leaf_balances_.size()]));
+    front.join(*leaf_balances_.back(), 0);
+    rear.join(*leaf_balances_.back(), 1);
+    front.set_rest(front.slot());  // the rockers settled: the axles' rest is the group's
+    rear.set_rest(rear.slot());
   }
 }
 

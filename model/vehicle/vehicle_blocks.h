@@ -21,6 +21,7 @@
 #include "model/vehicle/free_body/free_bodies.h"
 #include "model/vehicle/half_shafts.h"
 #include "model/vehicle/leaf_axle.h"
+#include "model/vehicle/leaf_balance.h"
 #include "model/vehicle/steering/column_steering.h"
 #include "model/vehicle/steering/enhanced_steering.h"
 #include "model/vehicle/steering/simple_steering.h"
@@ -81,6 +82,11 @@ class VehicleBlocks {
   }
   void place_leaf_axles_at_rest() const noexcept {
     for (const auto& l : leaf_axles_) l->place_at_rest();
+    for (const auto& b : leaf_balances_) b->place_at_rest();
+  }
+  /// The leaf balances (`[[load_sharing]] kind = "leaf_balance"`, leaf_balance.h).
+  [[nodiscard]] const std::vector<std::unique_ptr<LeafBalance>>& leaf_balances() const noexcept {
+    return leaf_balances_;
   }
   /// The framework's stepper: M_VI and q of the step (for the force-coupled combination).
   [[nodiscard]] const solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization>&
@@ -111,6 +117,9 @@ class VehicleBlocks {
   std::unique_ptr<solver::Stage> steering_stage_;                ///< the stepper of one of the two
   std::unique_ptr<FreeBodies> free_bodies_;                      ///< none without [[free_body]]
   std::vector<std::unique_ptr<LeafAxleSuspension>> leaf_axles_;  ///< [axle.leaf_spring]
+  std::vector<std::unique_ptr<LeafBalance>> leaf_balances_;      ///< rockers between leaves
+  /// The leaf balances of `p` over the leaf axles built (construction time).
+  void build_leaf_balances(const VehicleParams& p, VehicleState& state);
   solver::MechanicalStepper<Eigen::Dynamic, solver::ArrowheadFactorization> framework_stepper_;
   solver::SequentialStepper sequence_;
 };

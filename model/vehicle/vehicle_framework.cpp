@@ -229,6 +229,12 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
     q(6 + i) = es.dot(f) - l.tire.suspension_n;  // J_v hub column e_s
   }
   if (any_rigid_) {
+    for (int a = 0; a < wheel_count_ / 2; ++a) {  // groups of axles (leaf balance) first
+      const Eigen::Index h = 6 + 2 * static_cast<Eigen::Index>(a);
+      if (rigid_[static_cast<std::size_t>(a)])
+        suspension_[static_cast<std::size_t>(a)]->prepare(y(h), y(h + 1),
+                                                          housing[static_cast<std::size_t>(a)]);
+    }
     for (int a = 0; a < wheel_count_ / 2; ++a) {
       if (rigid_[static_cast<std::size_t>(a)])
         q.segment<2>(6 + 2 * a) +=

@@ -300,13 +300,18 @@ struct FaultLimits {
 
 /// A load-sharing bogie (model/vehicle/load_sharing.h): adjacent independent axles whose
 /// springs share the load by a fixed split - a walking beam (two axles, the beam pivoted at
-/// pivot_x_m) or connected air springs (equal shares). `[[load_sharing]]` of the vehicle file.
-enum class LoadSharingKind : std::uint8_t { kAirSprings, kWalkingBeam };
+/// pivot_x_m) or connected air springs (equal shares) - or a leaf balance (two leaf-sprung
+/// rigid axles, a rocker pivoted at pivot_x_m between their leaves: leaf_balance.h).
+/// `[[load_sharing]]` of the vehicle file.
+enum class LoadSharingKind : std::uint8_t { kAirSprings, kWalkingBeam, kLeafBalance };
 struct LoadSharingParams {
   LoadSharingKind kind = LoadSharingKind::kAirSprings;
   int first_axle = 0;  ///< index from 0, front to rear
   int axle_count = 2;
-  double pivot_x_m = 0;  ///< walking beam: the pivot on the frame (from the CG, forward +)
+  double pivot_x_m = 0;  ///< walking beam, leaf balance: the pivot (from the CG, forward +)
+  /// Leaf balance: torque rods locate the axles, taking their housings' fore-aft force and pitch
+  /// moment (brake and drive reactions) to the frame; the leaves carry the vertical load only.
+  bool torque_rods = false;
 };
 
 struct VehicleParams {

@@ -142,6 +142,11 @@ void fill_leaf_axles(const VehicleState& state, UnitReport& u) {
       r.leaf_iterations = s.iterations[side];
     }
   }
+  for (const LeafBalanceState& b : state.leaf_balances) {
+    if (b.first_axle < 0) continue;
+    for (std::size_t w = 0; w < 4; ++w)  // both axles' wheels, left and right
+      u.wheels[2 * static_cast<std::size_t>(b.first_axle) + w].leaf_rocker_rad = b.u(4 + w % 2);
+  }
 }
 
 }  // namespace

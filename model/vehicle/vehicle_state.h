@@ -13,6 +13,7 @@
 #include "model/report.h"
 #include "model/vehicle/chassis_kinematics.h"
 #include "model/vehicle/leaf_axle_state.h"
+#include "model/vehicle/leaf_balance_state.h"
 #include "model/vehicle/vehicle_params.h"
 
 namespace rig::model::vehicle {
@@ -77,6 +78,9 @@ struct VehicleState {
   /// Rigid axles on leaf springs (leaf_axle.h), in axle order: the leaves' warm starts and the
   /// condensed fore-aft travel and wind-up (set at rest by the axle's element on a reset).
   std::array<LeafAxleState, kMaxLeafAxles> leaf_axles{};
+  /// Leaf balances (leaf_balance.h): the rocker angles and the group's warm start (at rest after
+  /// a reset, as the leaf axles).
+  std::array<LeafBalanceState, kMaxLeafBalances> leaf_balances{};
   /// CG acceleration over the last step, body axes (from z(k+1) - z(k)).
   Vec3 acceleration_mps2 = Vec3::Zero();
 };

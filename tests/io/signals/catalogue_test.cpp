@@ -32,9 +32,10 @@ constexpr std::size_t count(std::initializer_list<int> axles, int joints, int di
       14 + 12 + 5 * static_cast<std::size_t>(joints) + 4 * static_cast<std::size_t>(differentials);
   // per wheel: 19, and the road under it (issue 16: road_z_m, road_normal_x/y/z, road_mu), and
   // its rigid axle's heave and roll (issue 17: axle_heave_m, axle_roll_rad), its leaf spring's
-  // wind-up, fore-aft travel, shackle, eye links and iterations (issue 17, leaf_axle.h: 6)
+  // wind-up, fore-aft travel, shackle, eye links and iterations (issue 17, leaf_axle.h: 6) and
+  // its leaf balance's rocker angle (leaf_balance.h: 1)
   // per unit also the frame's twist, twist rate and torsion moment (issue 17 item 5): 15 + 3
-  for (const int a : axles) n += 2 + 15 + 3 + static_cast<std::size_t>(2 * a) * (19 + 5 + 2 + 6);
+  for (const int a : axles) n += 2 + 15 + 3 + static_cast<std::size_t>(2 * a) * (19 + 5 + 2 + 7);
   return n;
 }
 
@@ -43,18 +44,18 @@ TEST(Catalogue, NamesAndCountsFollowTheModelShape) {
   const RigConfig truck = load_config(kTruck);
   const RigConfig three = load_config(kThreeUnits);
   const RigConfig awd = load_config(kSedan4x4);
-  EXPECT_EQ(sedan.catalogue->entries().size(), count({2}, 0));        // 174
-  EXPECT_EQ(truck.catalogue->entries().size(), count({3}, 0));        // 238
-  EXPECT_EQ(three.catalogue->entries().size(), count({2, 2, 2}, 2));  // 480
-  EXPECT_EQ(awd.catalogue->entries().size(), count({2}, 0, 3));       // 186
-  EXPECT_EQ(sedan.catalogue->entries().size(), 174u);
+  EXPECT_EQ(sedan.catalogue->entries().size(), count({2}, 0));        // 178
+  EXPECT_EQ(truck.catalogue->entries().size(), count({3}, 0));        // 244
+  EXPECT_EQ(three.catalogue->entries().size(), count({2, 2, 2}, 2));  // 492
+  EXPECT_EQ(awd.catalogue->entries().size(), count({2}, 0, 3));       // 190
+  EXPECT_EQ(sedan.catalogue->entries().size(), 178u);
   EXPECT_NE(sedan.catalogue->find("unit1.drivetrain.differential_lock_axle_cmd"), nullptr);
   EXPECT_EQ(sedan.catalogue->find("unit1.drivetrain.diff1.locked"), nullptr);
   EXPECT_NE(awd.catalogue->find("unit1.drivetrain.diff3.output_b_speed_radps"), nullptr);
   EXPECT_EQ(awd.catalogue->find("unit1.drivetrain.diff4.locked"), nullptr);
   // free bodies (issue 17 item 4): 12 doubles and on_stop per body; none without (above)
   const RigConfig cab = load_config(kTractorCab);
-  EXPECT_EQ(cab.catalogue->entries().size(), count({3}, 0) + 3 * 13);  // 277
+  EXPECT_EQ(cab.catalogue->entries().size(), count({3}, 0) + 3 * 13);  // 283
   for (const char* name : {"body1.roll_rad", "body2.x_m", "body3.z_m", "body3.on_stop"})
     EXPECT_NE(cab.catalogue->find(name), nullptr) << name;
   EXPECT_EQ(cab.catalogue->find("body4.z_m"), nullptr);

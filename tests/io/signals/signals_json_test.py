@@ -37,10 +37,10 @@ LEGACY = ["steering_wheel_angle_cmd_rad", "steering_wheel_torque_cmd_nm", "assis
           "brake_pressure_fl_pa", "brake_pressure_fr_pa", "brake_pressure_rl_pa",
           "brake_pressure_rr_pa", "position_x_m", "position_y_m", "heading_rad"]
 
-for config, count in [(SRC / "config/rig.toml", 174),
-                      (SRC / "tests/io/signals/configs/truck.toml", 238),
-                      (SRC / "tests/io/signals/configs/three-units.toml", 480),
-                      (SRC / "config/maneuvers/mu-split-acceleration-4x4.toml", 186)]:
+for config, count in [(SRC / "config/rig.toml", 178),
+                      (SRC / "tests/io/signals/configs/truck.toml", 244),
+                      (SRC / "tests/io/signals/configs/three-units.toml", 492),
+                      (SRC / "config/maneuvers/mu-split-acceleration-4x4.toml", 190)]:
     entries = catalogue(config)
     check(len(entries) == count, f"{config}: {len(entries)} entries, expected {count}")
     seen = set()

@@ -1,8 +1,8 @@
 // The 40 t tractor-semitrailer (config/combinations/tractor-semitrailer-40t.toml, issue 17 item
 // 7), its tractor on leaf-sprung rigid axles (config/vehicles/tractor-6x4-leaf.toml): gross
 // combination mass, static axle and kingpin loads against the hand calculation, the
-// equalised tridem; over a lane change and braking at h = 1 ms at most 2 Newton iterations per
-// coupled step (the joints) and no allocation.
+// equalised tridem and the tractor's leaf-balanced tandem; over a lane change and braking at h = 1
+// ms at most 2 Newton iterations per coupled step (the joints) and no allocation.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,6 +15,7 @@
 #include "tests/support/alloc_counter.h"
 #include "tests/support/combination_files.h"
 #include "tests/support/driver_inputs.h"
+#include "tests/support/static_axle_loads.h"
 
 namespace rig::model::combination {
 namespace {
@@ -36,11 +37,10 @@ double axle_load_n(Combination& c, int unit, int axle) {
 }
 
 /// The hand calculation: the semitrailer's tridem equalised (the lever rule between the kingpin
-/// and the tridem centre on the sprung mass); the tractor's frame, rigid, on its axles' springs
-/// (2 k per axle; the leaf-sprung tractor's k: each leaf's rate, spring_stiffness_npm) under
-/// the frame, the cab, engine and seat and the kingpin load: heave z and pitch p from the vertical
-/// and the pitch balance, axle load 2 k (z - x p) + its unsprung weight. Returns the axle loads of
-/// both units and the kingpin load.
+/// and the tridem centre on the sprung mass); the tractor's frame, rigid, on its steer axle and
+/// its leaf-balanced tandem (the lever rule, the rocker's split) under the frame, the cab,
+/// engine and seat and the kingpin load; each axle's load that and its unsprung weight. Returns
+/// the axle loads of both units and the kingpin load.
 struct HandLoads {
   std::array<double, 3> tractor_n{}, trailer_n{};
   double kingpin_n = 0;
@@ -57,29 +57,12 @@ HandLoads hand_loads(const CombinationParams& p) {
   out.kingpin_n = w_semi * (0 - x_tridem) / (x_kingpin - x_tridem);
   for (std::size_t a = 0; a < 3; ++a)
     out.trailer_n[a] = (w_semi - out.kingpin_n) / 3 + 2 * s.axles[a].unsprung_mass_kg * g;
-  // tractor: sum F = W, sum F x = M with F_a = c_a (z - x_a p), c_a = 2 k_a
-  double w = t.chassis.mass_kg * g + out.kingpin_n;
-  double m = out.kingpin_n * p.joints[0].leading_point_m.x();
-  for (const auto& b : t.free_bodies) {
-    w += b.mass_kg * g;
-    m += b.mass_kg * g * b.position_m[0];
-  }
-  double c0 = 0, c1 = 0, c2 = 0;  // sum c, sum c x, sum c x^2
-  for (const auto& a : t.axles) {
-    const double c = 2 * a.spring_stiffness_npm;
-    c0 += c;
-    c1 += c * a.position_x_m;
-    c2 += c * a.position_x_m * a.position_x_m;
-  }
-  // [c0 -c1; c1 -c2] [z; p] = [w; m] (Cramer)
-  const double det = -c0 * c2 + c1 * c1;
-  const double z = (-w * c2 + c1 * m) / det;
-  const double pitch = (c0 * m - c1 * w) / det;
-  for (std::size_t a = 0; a < 3; ++a) {
-    const auto& ax = t.axles[a];
-    out.tractor_n[a] =
-        2 * ax.spring_stiffness_npm * (z - ax.position_x_m * pitch) + 2 * ax.unsprung_mass_kg * g;
-  }
+  // tractor (tests/support/static_axle_loads.h): its frame on the steer axle's springs and the
+  // leaf-balanced tandem under the frame, the cab, engine and seat and the kingpin load
+  const std::array<double, 6> spring =
+      test::static_spring_loads_n(t, out.kingpin_n, p.joints[0].leading_point_m.x());
+  for (std::size_t a = 0; a < 3; ++a)
+    out.tractor_n[a] = spring[a] + 2 * t.axles[a].unsprung_mass_kg * g;
   return out;
 }
 
@@ -125,6 +108,8 @@ TEST(TractorSemitrailer40t, StaticAxleAndKingpinLoadsMatchTheHandCalculation) {
   const double mean = (axle_load_n(c, 1, 0) + axle_load_n(c, 1, 1) + axle_load_n(c, 1, 2)) / 3;
   for (int a = 0; a < 3; ++a)
     EXPECT_NEAR(axle_load_n(c, 1, a), mean, 0.02 * mean) << "tridem axle " << a + 1;
+  // and the tractor's leaf balance: its tandem axles within 2 % of each other (equal arms)
+  EXPECT_NEAR(axle_load_n(c, 0, 2), axle_load_n(c, 0, 1), 0.02 * axle_load_n(c, 0, 1));
 }
 
 // A lane change at 50 km/h (one period of a 0.4 Hz steer, 1.2 rad at the wheel), then braking
