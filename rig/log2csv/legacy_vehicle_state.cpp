@@ -3,6 +3,7 @@
 #include "rig/vehicle_state_v1_t.hpp"
 #include "rig/vehicle_state_v2_t.hpp"
 #include "rig/vehicle_state_v3_t.hpp"
+#include "rig/vehicle_state_v4_t.hpp"
 
 namespace rig::log2csv {
 
@@ -12,6 +13,7 @@ using State = rig::vehicle_state_t;
 using V1 = rig::vehicle_state_v1_t;
 using V2 = rig::vehicle_state_v2_t;
 using V3 = rig::vehicle_state_v3_t;
+using V4 = rig::vehicle_state_v4_t;
 
 bool decode_current(const Event& event, State& msg) {
   return msg.decode(event.data, 0, static_cast<int>(event.size)) >= 0;
@@ -20,8 +22,8 @@ bool decode_current(const Event& event, State& msg) {
 bool has_every_row(std::string_view /*name*/) { return true; }
 
 // ---- v1: before the per-wheel road fields (issue 16); v2: before the differentials (issue
-// 17); v3: before the frame torsion and the leaf springs (issue 17). The members all share,
-// then the later ones'. ----
+// 17); v3: before the frame torsion and the leaf springs (issue 17); v4: before the leaf
+// balance (issue 17). The members all share, then the later ones'. ----
 
 /// Rows no layout before v4 had.
 bool frame_or_leaf(std::string_view name) {
@@ -164,25 +166,49 @@ bool v2_has_row(std::string_view name) {
          name != "num_diffs";
 }
 
+/// The members v3 and v4 share.
+template <typename Legacy>
+void copy_v3(const Legacy& a, State& b) {
+  copy_frame_and_units(a, b);
+  copy_wheels(a, b);
+  copy_road(a, b);
+  b.wheel_axle_heave_m = a.wheel_axle_heave_m;
+  b.wheel_axle_roll_rad = a.wheel_axle_roll_rad;
+  copy_vehicle_and_joints(a, b);
+  b.num_diffs = a.num_diffs;
+  b.diff_input_speed_radps = a.diff_input_speed_radps;
+  b.diff_output_a_speed_radps = a.diff_output_a_speed_radps;
+  b.diff_output_b_speed_radps = a.diff_output_b_speed_radps;
+  b.diff_locked = a.diff_locked;
+  copy_bodies(a, b);
+}
+
 bool decode_v3(const Event& event, State& msg) {
   V3 v3;
   if (v3.decode(event.data, 0, static_cast<int>(event.size)) < 0) return false;
-  copy_frame_and_units(v3, msg);
-  copy_wheels(v3, msg);
-  copy_road(v3, msg);
-  msg.wheel_axle_heave_m = v3.wheel_axle_heave_m;
-  msg.wheel_axle_roll_rad = v3.wheel_axle_roll_rad;
-  copy_vehicle_and_joints(v3, msg);
-  msg.num_diffs = v3.num_diffs;
-  msg.diff_input_speed_radps = v3.diff_input_speed_radps;
-  msg.diff_output_a_speed_radps = v3.diff_output_a_speed_radps;
-  msg.diff_output_b_speed_radps = v3.diff_output_b_speed_radps;
-  msg.diff_locked = v3.diff_locked;
-  copy_bodies(v3, msg);
+  copy_v3(v3, msg);
   return true;
 }
 
 bool v3_has_row(std::string_view name) { return !frame_or_leaf(name); }
+
+bool decode_v4(const Event& event, State& msg) {
+  V4 v4;
+  if (v4.decode(event.data, 0, static_cast<int>(event.size)) < 0) return false;
+  copy_v3(v4, msg);
+  msg.unit_frame_twist_rad = v4.unit_frame_twist_rad;
+  msg.unit_frame_twist_rate_radps = v4.unit_frame_twist_rate_radps;
+  msg.unit_frame_torsion_moment_nm = v4.unit_frame_torsion_moment_nm;
+  msg.wheel_leaf_windup_rad = v4.wheel_leaf_windup_rad;
+  msg.wheel_leaf_fore_aft_m = v4.wheel_leaf_fore_aft_m;
+  msg.wheel_leaf_shackle_rad = v4.wheel_leaf_shackle_rad;
+  msg.wheel_leaf_front_link_rad = v4.wheel_leaf_front_link_rad;
+  msg.wheel_leaf_rear_link_rad = v4.wheel_leaf_rear_link_rad;
+  msg.wheel_leaf_iterations = v4.wheel_leaf_iterations;
+  return true;
+}
+
+bool v4_has_row(std::string_view name) { return name != "wheel_leaf_rocker_rad"; }
 
 constexpr VehicleStateLayout kCurrent{"rig.vehicle_state_t", decode_current, has_every_row};
 constexpr VehicleStateLayout kV1{"rig.vehicle_state_t (v1: before the wheel_road_ fields)",
@@ -192,6 +218,8 @@ constexpr VehicleStateLayout kV2{"rig.vehicle_state_t (v2: before the diff_ fiel
 constexpr VehicleStateLayout kV3{
     "rig.vehicle_state_t (v3: before the unit_frame_ and wheel_leaf_ fields)", decode_v3,
     v3_has_row};
+constexpr VehicleStateLayout kV4{"rig.vehicle_state_t (v4: before wheel_leaf_rocker_rad)",
+                                 decode_v4, v4_has_row};
 
 }  // namespace
 
@@ -201,6 +229,7 @@ const VehicleStateLayout* legacy_vehicle_state_layout(std::int64_t hash) {
   if (hash == V1::getHash()) return &kV1;
   if (hash == V2::getHash()) return &kV2;
   if (hash == V3::getHash()) return &kV3;
+  if (hash == V4::getHash()) return &kV4;
   return nullptr;
 }
 

@@ -157,11 +157,11 @@ TEST(Log2Csv, ReproducesKnownValuesAndFlattensArrays) {
   EXPECT_EQ(state.header.front(), "timestamp_us");
   // 8 leading scalars, 2 units x (15 + the 3 frame-torsion fields of issue 17), num_wheels,
   // 6 x (1 + 24 + 1 flag: 17 + the 5 road fields of issue 16 + the 2 rigid-axle fields of issue
-  // 17; + the 6 leaf-spring fields of issue 17), 15 scalars, gear and the 3 model-validity
+  // 17; + the 6 leaf-spring fields and the leaf balance's rocker of issue 17), 15 scalars, gear and the 3 model-validity
   // fields, num_joints, 1 joint x 5, num_diffs (issue 17; the synthetic model has no
   // differentials: no diff columns).
   EXPECT_EQ(state.header.size(),
-            8u + 2u * (15u + 3u) + 1u + 6u * (26u + 6u) + 15u + 3u + 2u + 5u + 1u);
+            8u + 2u * (15u + 3u) + 1u + 6u * (26u + 7u) + 15u + 3u + 2u + 5u + 1u);
   EXPECT_EQ(state.rows[123].size(), state.header.size());
   EXPECT_EQ(state.number(123, "cycle"), 123.0);
   EXPECT_EQ(state.number(123, "sim_time_s"), 0.123);
