@@ -19,6 +19,7 @@
 #include "tests/model/vehicle/leaf_spring/reference_json.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
+#include "tests/support/vehicle_rest.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -40,16 +41,6 @@ double interpolate(const std::vector<double>& x, const std::vector<double>& y, d
   while (i + 1 < x.size() && x[i] < at) ++i;
   const double t = (at - x[i - 1]) / (x[i] - x[i - 1]);
   return y[i - 1] + t * (y[i] - y[i - 1]);
-}
-
-/// At rest in neutral with the brakes on, settled (VehicleModel::settle), then `seconds` more.
-void rest(VehicleModel& m, Signals& s, double seconds) {
-  s[Signal::kGearRequest] = 0;
-  s[Signal::kBrakePressureFront] = 8e5;
-  s[Signal::kBrakePressureRear] = 8e5;
-  (void)m.settle(0.0, 0);
-  const long n = std::lround(seconds / m.step_size_s());
-  for (long k = 0; k < n; ++k) ASSERT_EQ(m.step(s), StepStatus::kOk);
 }
 
 TEST(LeafAxle, VanLoadsTheFeReferencesLeafOnItsRigidRearAxle) {
@@ -74,7 +65,7 @@ TEST(LeafAxle, StaticAxleLoadsMatchTheLeverRule) {
   const VehicleParams p = van();
   VehicleModel m(p, 1e-3);
   Signals s = test::all_driver_inputs();
-  rest(m, s, 1.0);
+  test::rest(m, s, 1.0);
   const double xf = p.axles[0].position_x_m, xr = p.axles[1].position_x_m;
   const double ws = p.chassis.mass_kg * kG;
   const double hand[2] = {ws * (-xr) / (xf - xr) + 2 * 55.0 * kG, ws * xf / (xf - xr) + 240.0 * kG};

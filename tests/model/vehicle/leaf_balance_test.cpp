@@ -20,6 +20,7 @@
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
 #include "tests/support/static_axle_loads.h"
+#include "tests/support/vehicle_rest.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -94,16 +95,6 @@ double axle_load_n(VehicleModel& m, int a) {
   return m.wheel_load_n(2 * a) + m.wheel_load_n(2 * a + 1);
 }
 
-/// Settled standing, braked (as tractor_leaf_test): the loads after 1 s.
-void settle_braked(VehicleModel& m) {
-  Signals s = test::all_driver_inputs();
-  s[Signal::kGearRequest] = 0;
-  s[Signal::kBrakePressureFront] = 8e5;
-  s[Signal::kBrakePressureRear] = 8e5;
-  (void)m.settle(0.0, 0);
-  for (int k = 0; k < 1000; ++k) ASSERT_EQ(m.step(s), StepStatus::kOk);
-}
-
 /// The steer axle within 0.1 % of the hand calculation, the tandem (the other support) too, and
 /// each tandem axle within 0.1 % of the tandem's load (the frame's settled pitch moves ~15 N from
 /// the last axle to the first: the hand calculation ignores the free bodies' heights, as
@@ -133,7 +124,8 @@ void expect_hand_loads(const VehicleParams& p, VehicleModel& m) {
 TEST(LeafBalance, CentredRockerOnEqualLeavesSharesTheTandemEqually) {
   const VehicleParams p = balanced_tractor();
   VehicleModel m(p, 1e-3);
-  settle_braked(m);
+  Signals s = test::all_driver_inputs();
+  test::rest(m, s, 1.0);  // settled standing, braked: the loads after 1 s
   expect_hand_loads(p, m);
   const double l2 = axle_load_n(m, 1), l3 = axle_load_n(m, 2);
   std::printf("tandem %.1f / %.1f N (%+.3f %%)\n", l2, l3, 100 * (l3 / l2 - 1));
@@ -148,7 +140,8 @@ TEST(LeafBalance, OffCentrePivotSplitsTheTandemByTheRockersArms) {
   p.axles[1].leaf_spring.front_bending_stiffness_nm2 = 6000.0;
   p.axles[1].leaf_spring.rear_bending_stiffness_nm2 = 6000.0;
   VehicleModel m(p, 1e-3);
-  settle_braked(m);
+  Signals s = test::all_driver_inputs();
+  test::rest(m, s, 1.0);  // settled standing, braked: the loads after 1 s
   expect_hand_loads(p, m);
   EXPECT_GT(axle_load_n(m, 1), 1.05 * axle_load_n(m, 2));
 }

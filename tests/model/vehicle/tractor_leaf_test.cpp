@@ -18,6 +18,7 @@
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
 #include "tests/support/static_axle_loads.h"
+#include "tests/support/vehicle_rest.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -53,11 +54,7 @@ TEST(TractorLeaf, ThreeLeafAxlesCarryTheHandCalculationsStaticLoads) {
   const Hand hand = hand_loads(p);
   VehicleModel m(p, 1e-3);
   Signals s = test::all_driver_inputs();
-  s[Signal::kGearRequest] = 0;
-  s[Signal::kBrakePressureFront] = 8e5;
-  s[Signal::kBrakePressureRear] = 8e5;
-  (void)m.settle(0.0, 0);
-  for (int k = 0; k < 1000; ++k) ASSERT_EQ(m.step(s), StepStatus::kOk);
+  test::rest(m, s, 1.0);
   const double g = p.road.gravity_mps2;
   // the tandem axles are held to 0.1 % of the tandem's load (the frame's settled pitch moves
   // ~15 N from the last axle to the first: the hand calculation ignores the free bodies'

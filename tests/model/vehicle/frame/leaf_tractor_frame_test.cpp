@@ -17,6 +17,7 @@
 #include "model/vehicle/vehicle_model.h"
 #include "tests/support/alloc_counter.h"
 #include "tests/support/driver_inputs.h"
+#include "tests/support/vehicle_rest.h"
 
 namespace rig::model::vehicle {
 namespace {
@@ -27,16 +28,6 @@ constexpr double kPi = std::numbers::pi;
 
 VehicleParams leaf_tractor() {
   return io::config::load_vehicle_file(RIG_SOURCE_DIR "/config/vehicles/tractor-6x4-leaf.toml");
-}
-
-/// At rest in neutral with the brakes on, settled, then `seconds` more.
-void rest(VehicleModel& m, Signals& s, double seconds) {
-  s[Signal::kGearRequest] = 0;
-  s[Signal::kBrakePressureFront] = 8e5;
-  s[Signal::kBrakePressureRear] = 8e5;
-  (void)m.settle(0.0, 0);
-  const long n = std::lround(seconds / m.step_size_s());
-  for (long k = 0; k < n; ++k) ASSERT_EQ(m.step(s), StepStatus::kOk);
 }
 
 TEST(LeafTractorFrame, ConfigHasTheLadderFrameWithTheTandemBehindTheSplit) {
@@ -66,7 +57,7 @@ TEST(LeafTractorFrame, StaticLoadsAreUnchangedByTheFrame) {
     p.free_bodies[2].position_m[1] = 0;
     VehicleModel m(p, kH);
     Signals s = test::all_driver_inputs();
-    rest(m, s, 3.0);
+    test::rest(m, s, 3.0);
     for (int i = 0; i < 6; ++i) wheel_loads[run].push_back(m.wheel_load_n(i));
     if (frame) {
       const double twist = m.state().framework_y(m.framework().twist_index());
@@ -158,7 +149,7 @@ double period_s(const std::vector<double>& x, double h) {
 double measured_torsion_hz(VehicleParams p, const Mode& hand, double amplitude_rad) {
   VehicleModel m(p, kH);
   Signals s = test::all_driver_inputs();
-  rest(m, s, 1.0);
+  test::rest(m, s, 1.0);
   auto& y = m.framework().coordinates();
   const Eigen::Index tw = m.framework().twist_index();
   const double rest_twist = y(tw);
