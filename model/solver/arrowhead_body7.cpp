@@ -1,5 +1,7 @@
 #include "model/solver/arrowhead_body7.h"
 
+#include "model/solver/inverse_2x2.h"
+
 namespace rig::model::solver {
 
 namespace {
@@ -28,12 +30,7 @@ void ArrowheadBody7::compute(const Eigen::MatrixXd& a) noexcept {
   schur(kHead, kHead) = a(t, t);
   for (std::size_t i = 0; i < leaf_inverse_.size(); ++i) {
     const Eigen::Index o = kHead + 2 * static_cast<Eigen::Index>(i);
-    // 2 x 2 leaf: explicit inverse (mass + stiffness + damping, far from singular)
-    const Eigen::Matrix2d l = a.block<2, 2>(o, o);
-    const double det = l(0, 0) * l(1, 1) - l(0, 1) * l(1, 0);
-    Eigen::Matrix2d inv;
-    inv << l(1, 1), -l(0, 1), -l(1, 0), l(0, 0);
-    inv /= det;
+    const Eigen::Matrix2d inv = inverse_2x2(a.block<2, 2>(o, o));  // a 2-DOF leaf
     leaf_inverse_[i] = inv;
     leaf_solved_[i].noalias() = inv * leaf_rows(a, o, t);
     body_coupling_t_[i].leftCols<kHead>() = a.block<kHead, 2>(0, o).transpose();

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "model/solver/inverse_2x2.h"
+
 namespace rig::model::solver {
 
 Eigen::Index ArrowheadPartition::total_size() const noexcept {
@@ -68,13 +70,7 @@ void ArrowheadFactorization::compute_body6_leaves2(const Matrix& a) noexcept {
   Mat6 schur = a.topLeftCorner<6, 6>();
   for (std::size_t i = 0; i < leaf_inverse2_.size(); ++i) {
     const Eigen::Index o = leaf_offsets_[i];
-    // 2 x 2 leaf: explicit inverse (M_VI's hub blocks are mass + stiffness + damping, far from
-    // singular)
-    const Eigen::Matrix2d l = a.block<2, 2>(o, o);
-    const double det = l(0, 0) * l(1, 1) - l(0, 1) * l(1, 0);
-    Eigen::Matrix2d inv;
-    inv << l(1, 1), -l(0, 1), -l(1, 0), l(0, 0);
-    inv /= det;
+    const Eigen::Matrix2d inv = inverse_2x2(a.block<2, 2>(o, o));  // a 2-DOF leaf
     leaf_inverse2_[i] = inv;
     leaf_solved2_[i].noalias() = inv * a.block<2, 6>(o, 0);
     body_coupling2_t_[i] = a.block<6, 2>(0, o).transpose();
