@@ -89,29 +89,39 @@ LeafBalance::Group LeafBalance::evaluate(const Vector6d& u, const Eigen::Vector4
     LeafAxleState& slot = axle.slot();
     for (Eigen::Index side = 0; side < 2; ++side) {
       const double lever = side == 0 ? axle.half_track_m() : -axle.half_track_m();
-      // (x, z, pitch, alpha) = M (u, e) + (0, rest height, 0, 0)
-      Eigen::Matrix<double, 4, 10> m = Eigen::Matrix<double, 4, 10>::Zero();
-      m(0, 2 * a) = 1;
-      m(1, 6 + 2 * a) = 1;
-      m(1, 7 + 2 * a) = lever;
-      m(2, 2 * a + 1) = 1;
-      m(3, 4 + side) = turn_per_beta_[static_cast<std::size_t>(a)];
-      const Eigen::Vector4d pose =
-          m * (Vector10d() << u, e).finished() +
-          Eigen::Vector4d(0, axle.rest_seat_z_m(static_cast<int>(side)), 0, 0);
+      // (x, z, pitch, alpha) = M (u, e) + (0, rest height, 0, 0): M selects five of the ten
+      // unknowns, unknown kCol[j] entering pose row kRow[j] with factor coef[j]; applied by
+      // index (as dense 4 x 10 products these went through Eigen's general matrix kernels, 10 k
+      // instructions per step; each sum has at most two non-zero terms, so the same bits)
+      const std::array<Eigen::Index, 5> col = {2 * a, 6 + 2 * a, 7 + 2 * a, 2 * a + 1, 4 + side};
+      constexpr std::array<Eigen::Index, 5> kRow = {0, 1, 1, 2, 3};
+      const std::array<double, 5> coef = {1.0, 1.0, lever, 1.0,
+                                          turn_per_beta_[static_cast<std::size_t>(a)]};
+      const Eigen::Vector4d pose(
+          u(2 * a), e(2 * a) + lever * e(2 * a + 1) + axle.rest_seat_z_m(static_cast<int>(side)),
+          u(2 * a + 1), coef[4] * u(4 + side));
       const ls::TurnedLeafForces t = ls::evaluate_turned(
           axle.leaf(), pose.head<3>(), pose(3), a == 0 ? ls::MovingEnd::kPin : ls::MovingEnd::kEye,
           slot.leaf[static_cast<std::size_t>(side)]);
-      // the axle's rows: the turned leaf's generalized forces; the rocker's row: the moment of
-      // the leaf's vertical force at its end about the pivot (not Q_alpha: turned_leaf.h)
-      Eigen::Matrix<double, 4, 10> rows = Eigen::Matrix<double, 4, 10>::Zero();
-      rows.topRows<3>() = t.stiffness.topRows<3>() * m;
+      // the axle's rows: the turned leaf's generalized forces (M^T Q, M^T K M); the rocker's row:
+      // the moment of the leaf's vertical force at its end about the pivot (not Q_alpha:
+      // turned_leaf.h)
       const double x_end = end_x_m_[static_cast<std::size_t>(a)];
-      rows.row(3) = x_end * t.d_end_force.row(1) * m;
-      g.q.noalias() += m.topRows<3>().transpose() * t.q.head<3>();
+      Eigen::Matrix<double, 4, 5> rows;  // d(Q_x, Q_z, Q_pitch, rocker moment) / d(kCol)
+      for (std::size_t j = 0; j < col.size(); ++j) {
+        rows.col(static_cast<Eigen::Index>(j)).head<3>() =
+            t.stiffness.col(kRow[j]).head<3>() * coef[j];
+        rows(3, static_cast<Eigen::Index>(j)) = x_end * t.d_end_force(1, kRow[j]) * coef[j];
+      }
+      for (std::size_t i = 0; i < 4; ++i) {  // the axle's unknowns: M^T's rows
+        const auto r = static_cast<Eigen::Index>(kRow[i]);
+        g.q(col[i]) += coef[i] * t.q(r);
+        for (std::size_t j = 0; j < col.size(); ++j)
+          g.stiffness(col[i], col[j]) += coef[i] * rows(r, static_cast<Eigen::Index>(j));
+      }
       g.q(4 + side) += x_end * t.end_force_n(1);
-      g.stiffness.noalias() += m.topRows<3>().transpose() * rows.topRows<3>();
-      g.stiffness.row(4 + side) += rows.row(3);
+      for (std::size_t j = 0; j < col.size(); ++j)
+        g.stiffness(4 + side, col[j]) += rows(3, static_cast<Eigen::Index>(j));
       g.spring_n[static_cast<std::size_t>(a)][static_cast<std::size_t>(side)] = -t.q(1);
       g.iterations[static_cast<std::size_t>(a)][static_cast<std::size_t>(side)] = t.leaf.iterations;
     }
