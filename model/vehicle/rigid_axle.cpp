@@ -20,8 +20,13 @@ RigidAxleGeometry rigid_axle_geometry(const AxleParams& a, double cg_height_m,
 
 RigidWheelPoint rigid_wheel_point(const RigidAxleGeometry& g, int side, double heave_m,
                                   double roll_rad) noexcept {
+  return rigid_wheel_point(g, side, heave_m, sin_cos(roll_rad));
+}
+
+RigidWheelPoint rigid_wheel_point(const RigidAxleGeometry& g, int side, double heave_m,
+                                  const SinCos& roll) noexcept {
   const Vec3& d0 = g.wheel_from_centre_m[static_cast<std::size_t>(side)];
-  const double c = std::cos(roll_rad), s = std::sin(roll_rad);
+  const double c = roll.cos, s = roll.sin;
   RigidWheelPoint w;
   w.from_axis_m = Vec3(d0.x(), c * d0.y() - s * d0.z(), s * d0.y() + c * d0.z());
   w.centre_m = g.roll_centre_m + w.from_axis_m;

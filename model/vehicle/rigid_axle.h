@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include "model/vehicle/chassis_kinematics.h"
+#include "model/vehicle/sin_cos_memo.h"
 #include "model/vehicle/vehicle_params.h"
 
 namespace rig::model::vehicle {
@@ -72,6 +73,9 @@ struct RigidWheelPoint {
 };
 [[nodiscard]] RigidWheelPoint rigid_wheel_point(const RigidAxleGeometry& g, int side,
                                                 double heave_m, double roll_rad) noexcept;
+/// The same with the roll's sine and cosine given.
+[[nodiscard]] RigidWheelPoint rigid_wheel_point(const RigidAxleGeometry& g, int side,
+                                                double heave_m, const SinCos& roll) noexcept;
 
 /// The hub travel reported for a wheel of a rigid axle: heave +- (track/2) roll (the wheel
 /// centre's travel against the body, linear in roll), side 0 left, 1 right.

@@ -129,13 +129,10 @@ LocalRoadPlane VehicleFramework::road_plane(const Mat3& rot, const Vector& y, co
                                             int i, double lookahead_s,
                                             ProbeHints& hints) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  const Vec3 r =
-      twisted(i)
-          ? (rigid_[k / 2] ? rear_rigid_point(i, y).centre_m : rear_wheel_pose(i, y).centre_m)
-      : rigid_[k / 2]
-          ? rigid_wheel_point(rigid_geometry_[k / 2], i % 2, y(6 + 2 * (i / 2)), y(7 + 2 * (i / 2)))
-                .centre_m
-          : wheel_centre(i, y(6 + i));
+  const Vec3 r = twisted(i)      ? (rigid_[k / 2] ? rear_rigid_point(i, y).centre_m
+                                                  : rear_wheel_pose(i, y).centre_m)
+                 : rigid_[k / 2] ? rigid_point(i / 2, i % 2, y).centre_m
+                                 : wheel_centre(i, y(6 + i));
   const Vec3 velocity = rot * (z.segment<3>(0) + z.segment<3>(3).cross(r));  // road frame
   const Vec3 centre = y.head<3>() + rot * r + lookahead_s * velocity;
   // behind the frame's split the spin axis turns with the twist (rigid or independent alike)

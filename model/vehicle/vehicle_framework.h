@@ -188,6 +188,15 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
     Vec3 centre_m, d_dheave, d_droll_m, d_dtwist_m, from_axis_m, spin_axis;
   };
   [[nodiscard]] RearRigidPoint rear_rigid_point(int i, const Vector& y) const noexcept;
+  /// Wheel `side` of rigid axle `axle` at y (the roll's sine and cosine through roll_memo_).
+  [[nodiscard]] RigidWheelPoint rigid_point(int axle, int side, const Vector& y) const noexcept {
+    const Eigen::Index h = 6 + 2 * static_cast<Eigen::Index>(axle);
+    return rigid_wheel_point(rigid_geometry_[static_cast<std::size_t>(axle)], side, y(h),
+                             roll_memo_[static_cast<std::size_t>(axle)](y(h + 1)));
+  }
+  [[nodiscard]] TwistRotation twist_rotation(const Vector& y) const noexcept {
+    return TwistRotation(twist_memo_(y(twist_)));
+  }
   void rear_rigid_mass_matrix(int axle, const Vector& y, Matrix& m) const noexcept;
   [[nodiscard]] WheelContact rear_rigid_contact(const Mat3& rot, const Vector& y, const Vector& z,
                                                 int i) const noexcept;
@@ -226,6 +235,9 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   FrameGeometry frame_{};
   Eigen::Index twist_ = -1;
   std::array<bool, kMaxAxles> rear_{};
+  // the rigid axles' roll and the twist: asked for by every wheel in every evaluation
+  mutable std::array<SinCosMemo, kMaxAxles> roll_memo_{};
+  mutable SinCosMemo twist_memo_;
   Mat3 inertia_;
   double total_mass_kg_ = 0;
   double support_load_n_ = 0;

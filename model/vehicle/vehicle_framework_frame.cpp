@@ -24,7 +24,7 @@ void VehicleFramework::setup_frame() {
 
 VehicleFramework::RearWheelPose VehicleFramework::rear_wheel_pose(int i,
                                                                   const Vector& y) const noexcept {
-  const TwistRotation rx(y(twist_));
+  const TwistRotation rx = twist_rotation(y);
   const TwistedPoint c = twisted_point(frame_, wheel_centre(i, y(6 + i)), rx);
   return {c.point_m, rx * hub_axis(i), c.d_dtwist_m,
           rx * work_.wheels[static_cast<std::size_t>(i)].spin_axis};
@@ -149,9 +149,8 @@ namespace rig::model::vehicle {
 VehicleFramework::RearRigidPoint VehicleFramework::rear_rigid_point(
     int i, const Vector& y) const noexcept {
   const auto k = static_cast<std::size_t>(i);
-  const Eigen::Index h = 6 + 2 * (i / 2);
-  const TwistRotation rx(y(twist_));  // cosine and sine once for the six vectors
-  const RigidWheelPoint w = rigid_wheel_point(rigid_geometry_[k / 2], i % 2, y(h), y(h + 1));
+  const TwistRotation rx = twist_rotation(y);
+  const RigidWheelPoint w = rigid_point(i / 2, i % 2, y);
   const TwistedPoint c = twisted_point(frame_, w.centre_m, rx);
   return {c.point_m,    rx * Vec3::UnitZ(), rx * w.d_droll_m,
           c.d_dtwist_m, rx * w.from_axis_m, rx * work_.wheels[k].spin_axis};

@@ -51,7 +51,7 @@ WheelContact VehicleFramework::rigid_contact(const Mat3& rot, const Vector& y, c
   if (twisted(i)) return rear_rigid_contact(rot, y, z, i);  // behind the frame's split
   const auto k = static_cast<std::size_t>(i);
   const Eigen::Index h = 6 + 2 * (i / 2);
-  const RigidWheelPoint w = rigid_wheel_point(rigid_geometry_[k / 2], i % 2, y(h), y(h + 1));
+  const RigidWheelPoint w = rigid_point(i / 2, i % 2, y);
   const Vec3 hub_velocity = Vec3::UnitZ() * z(h) + w.d_droll_m * z(h + 1);
   const double r0 = p_.axles[k / 2].tire.tmeasy.radius_unloaded_m;
   WheelContact c =
@@ -77,7 +77,7 @@ void VehicleFramework::rigid_mass_matrix(int axle, const Vector& y, Matrix& m) c
   const Eigen::Index h = 6 + 2 * static_cast<Eigen::Index>(axle);
   const double mw = p_.axles[a].unsprung_mass_kg;
   for (int side = 0; side < 2; ++side) {
-    const RigidWheelPoint w = rigid_wheel_point(rigid_geometry_[a], side, y(h), y(h + 1));
+    const RigidWheelPoint w = rigid_point(axle, side, y);
     const Vec3& r = w.centre_m;
     const Mat3 rx = skew(r);
     Eigen::Matrix<double, 3, 2> gq;  // d r / d(heave, roll)
@@ -112,7 +112,7 @@ void VehicleFramework::rigid_wheel_applied(int i, const Mat3& rot, const Vector&
   const auto k = static_cast<std::size_t>(i);
   const Eigen::Index h = 6 + 2 * (i / 2);
   const Vec3 v = z.segment<3>(0), w = z.segment<3>(3);
-  const RigidWheelPoint pt = rigid_wheel_point(rigid_geometry_[k / 2], i % 2, y(h), y(h + 1));
+  const RigidWheelPoint pt = rigid_point(i / 2, i % 2, y);
   const Vec3& r = pt.centre_m;
   const Vec3 rel = Vec3::UnitZ() * z(h) + pt.d_droll_m * z(h + 1);
   // velocity-dependent acceleration: transport, Coriolis, and the roll's centripetal term
@@ -154,7 +154,7 @@ void VehicleFramework::rigid_tire_jacobians(int i, const Mat3& rot, const Mat3& 
   const Eigen::Index h = 6 + 2 * (i / 2);
   const WheelContact c = contact(rot, y, z, i);
   if (c.penetration_m <= 0) return;
-  const RigidWheelPoint pt = rigid_wheel_point(rigid_geometry_[k / 2], i % 2, y(h), y(h + 1));
+  const RigidWheelPoint pt = rigid_point(i / 2, i % 2, y);
   const Vec3& centre = pt.centre_m;
   const Vec3 roll_col = pt.d_droll_m + roll_cross(c.lever_m - centre);  // d contact / d roll
   const Vec3 e_z = Vec3::UnitZ();

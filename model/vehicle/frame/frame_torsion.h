@@ -28,6 +28,7 @@
 
 #include "model/vehicle/chassis_kinematics.h"
 #include "model/vehicle/frame/frame_params.h"
+#include "model/vehicle/sin_cos_memo.h"
 
 namespace rig::model::vehicle {
 
@@ -68,6 +69,7 @@ struct FrameGeometry {
 struct TwistRotation {
   double c = 1.0, s = 0.0;
   explicit TwistRotation(double theta) noexcept : c(std::cos(theta)), s(std::sin(theta)) {}
+  explicit TwistRotation(const SinCos& theta) noexcept : c(theta.cos), s(theta.sin) {}
   [[nodiscard]] Vec3 operator*(const Vec3& v) const noexcept {
     return {v.x(), c * v.y() - s * v.z(), s * v.y() + c * v.z()};
   }
