@@ -17,6 +17,7 @@ VehicleFramework::VehicleFramework(const VehicleParams& p, VehicleState& state,
       road_(p.road),
       wheel_count_(2 * static_cast<int>(p.axles.size())),
       n_(6 + 2 * static_cast<Eigen::Index>(p.axles.size()) + (p.frame.enabled ? 1 : 0)),
+      contacts_(n_),
       shares_(axle_shares(p)) {
   const double g = p.road.gravity_mps2;
   const auto& c = p.chassis;
@@ -197,6 +198,7 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
   const Vec3 g = rot.transpose() * road_.gravity_mps2();
   const double mc = p_.chassis.mass_kg;
   q.setZero(n_);
+  contacts_.open(y, z, true);  // the partials' contacts if at the same (y, z)
   // chassis: gravity, velocity-dependent acceleration a_0 = w x v, gyroscopic (explicit terms)
   Vec3 ft = mc * (g - w.cross(v));
   ft.x() -= 0.5 * p_.chassis.air_density_kgpm3 * p_.chassis.drag_area_m2 * v.x() * std::abs(v.x());
@@ -242,6 +244,7 @@ void VehicleFramework::applied_forces(const Vector& y, const Vector& z, Vector& 
   q.segment<3>(0) = ft;
   q.segment<3>(3) = tr;
   if (free_bodies_) free_bodies_->add_chassis_load(rigid_pose(y, z), q.head<6>());
+  contacts_.close();
 }
 
 VehicleFramework::CarrierLoad VehicleFramework::carrier_load(int i, const Mat3& rot,
@@ -253,7 +256,7 @@ VehicleFramework::CarrierLoad VehicleFramework::carrier_load(int i, const Mat3& 
   CarrierLoad l{
       .force_n = fw,
       .contact_moment_nm = Vec3::Zero(),
-      .contact = contact(rot, y, z, i),
+      .contact = evaluation_contact(rot, y, z, i),
       .tire = {},
       .spin_torque_nm = work_.wheels[k].shaft_torque_nm + work_.wheels[k].brake_torque_nm};
   l.tire = wheel_forces(l.contact, y, z, i);
@@ -289,7 +292,7 @@ void VehicleFramework::tire_jacobians(int i, const Mat3& rot, const Mat3& e_inv,
   const auto k = static_cast<std::size_t>(i);
   const tire::TmeasyParams& t = p_.axles[k / 2].tire.tmeasy;
   const Eigen::Index h = 6 + i;
-  const WheelContact c = contact(rot, y, z, i);
+  const WheelContact c = evaluation_contact(rot, y, z, i);
   if (c.penetration_m <= 0) return;
   const Vec3 centre = wheel_centre(i, y(h));
   const Vec3 es = hub_axis(i);
@@ -307,6 +310,7 @@ bool VehicleFramework::force_jacobians(const Vector& y, const Vector& z, Matrix&
                                        Matrix& dq_dz) const noexcept {
   dq_dy.setZero(n_, n_);
   dq_dz.setZero(n_, n_);
+  contacts_.open(y, z, false);  // kept for the applied forces at the same (y, z)
   const Mat3 rot = body_to_road(y(3), y(4), y(5));
   const Mat3 e_inv = body_rates_from_euler_rates(y(4), y(5));  // K_BB angle part
   for (int i = 0; i < wheel_count_; ++i) {

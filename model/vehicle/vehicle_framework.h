@@ -16,6 +16,7 @@
 
 #include "model/road/road.h"
 #include "model/solver/mechanical_block.h"
+#include "model/vehicle/evaluation_contacts.h"
 #include "model/vehicle/frame/frame_torsion.h"
 #include "model/vehicle/load_sharing.h"
 #include "model/vehicle/rigid_axle.h"
@@ -220,6 +221,12 @@ class VehicleFramework final : public solver::MechanicalBlock<Eigen::Dynamic> {
   road::Road road_;
   int wheel_count_;
   Eigen::Index n_;
+  mutable EvaluationContacts contacts_;  ///< the contacts of force_jacobians for applied_forces
+  /// Wheel i's contact in the open force evaluation (evaluation_contacts.h).
+  [[nodiscard]] WheelContact evaluation_contact(const Mat3& rot, const Vector& y, const Vector& z,
+                                                int i) const noexcept {
+    return contacts_.get(i, [&] { return contact(rot, y, z, i); });
+  }
   std::array<int, kMaxWheels> axle_of_{};
   std::array<Vec3, kMaxWheels> mount_{};
   std::array<double, kMaxWheels> preload_{};

@@ -116,7 +116,7 @@ void VehicleFramework::rear_tire_jacobians(int i, const Mat3& rot, const Mat3& e
   const auto k = static_cast<std::size_t>(i);
   const tire::TmeasyParams& t = p_.axles[k / 2].tire.tmeasy;
   const Eigen::Index h = 6 + i;
-  const WheelContact c = contact(rot, y, z, i);
+  const WheelContact c = evaluation_contact(rot, y, z, i);
   if (c.penetration_m <= 0) return;
   const RearWheelPose pose = rear_wheel_pose(i, y);
   const Vec3 twist_col = pose.d_dtwist_m + ex_cross(c.lever_m - pose.centre_m);
@@ -255,7 +255,7 @@ void VehicleFramework::rear_rigid_tire_jacobians(int i, const Mat3& rot, const M
   const auto k = static_cast<std::size_t>(i);
   const tire::TmeasyParams& t = p_.axles[k / 2].tire.tmeasy;
   const Eigen::Index h = 6 + 2 * (i / 2);
-  const WheelContact c = contact(rot, y, z, i);
+  const WheelContact c = evaluation_contact(rot, y, z, i);
   if (c.penetration_m <= 0) return;
   const RearRigidPoint pt = rear_rigid_point(i, y);
   const Vec3 about_centre = ex_cross(c.lever_m - pt.centre_m);

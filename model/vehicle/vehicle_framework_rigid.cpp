@@ -152,7 +152,7 @@ void VehicleFramework::rigid_tire_jacobians(int i, const Mat3& rot, const Mat3& 
   const auto k = static_cast<std::size_t>(i);
   const tire::TmeasyParams& t = p_.axles[k / 2].tire.tmeasy;
   const Eigen::Index h = 6 + 2 * (i / 2);
-  const WheelContact c = contact(rot, y, z, i);
+  const WheelContact c = evaluation_contact(rot, y, z, i);
   if (c.penetration_m <= 0) return;
   const RigidWheelPoint pt = rigid_point(i / 2, i % 2, y);
   const Vec3& centre = pt.centre_m;
