@@ -13,6 +13,8 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 
+#include "model/solver/fixed_lu.h"
+
 namespace rig::model::solver {
 
 class ArrowheadBody7 {
@@ -35,7 +37,7 @@ class ArrowheadBody7 {
   std::vector<Eigen::Matrix2d> leaf_inverse_;  ///< A_ii^-1
   std::vector<Mat27> leaf_solved_;             ///< A_ii^-1 A_iB
   std::vector<Mat27> body_coupling_t_;         ///< A_Bi^T
-  Eigen::PartialPivLU<Mat7> schur_lu_;
+  FixedLU<7> schur_lu_;
 };
 
 }  // namespace rig::model::solver

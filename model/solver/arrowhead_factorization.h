@@ -136,7 +136,7 @@ class ArrowheadFactorization {
   std::vector<Eigen::Matrix2d> leaf_inverse2_;  ///< A_ii^-1
   std::vector<Mat26> leaf_solved2_;             ///< A_ii^-1 A_iB
   std::vector<Mat26> body_coupling2_t_;         ///< A_Bi^T
-  Eigen::PartialPivLU<Mat6> schur_lu6_;
+  FixedLU<6> schur_lu6_;
 
   // fixed-size path: body 6 + a tail of 1 (stored last), every leaf 2
   bool body7_leaves2_ = false;

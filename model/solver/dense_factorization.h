@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 
+#include "model/solver/fixed_lu.h"
+
 namespace rig::model::solver {
 
 /// Partial-pivoting LU of an N x N matrix.
@@ -37,7 +39,7 @@ class DenseFactorization {
 
  private:
   using Vector = Eigen::Matrix<double, N, 1>;
-  Eigen::PartialPivLU<Matrix> lu_;
+  typename PartialPivLuOf<N>::type lu_;
   mutable Vector column_in_, column_out_;
 };
 

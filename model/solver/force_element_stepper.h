@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 
 #include "model/solver/finite_difference.h"
+#include "model/solver/fixed_lu.h"
 #include "model/solver/force_element.h"
 #include "model/solver/stage.h"
 
@@ -68,7 +69,7 @@ class ForceElementStepper final : public Stage {
   Vector f_;
   Matrix jac_, a_;
   Vector ds_, work_, f1_;
-  Eigen::PartialPivLU<Matrix> lu_;
+  typename PartialPivLuOf<N>::type lu_;
 };
 
 }  // namespace rig::model::solver

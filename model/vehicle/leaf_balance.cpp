@@ -6,6 +6,8 @@
 
 #include <Eigen/LU>
 
+#include "model/solver/fixed_lu.h"
+
 #include "model/vehicle/leaf_spring/turned_leaf.h"
 
 namespace rig::model::vehicle {
@@ -147,7 +149,7 @@ void LeafBalance::balance(const Eigen::Vector4d& e, const Eigen::Vector4d& load)
     ++s.evaluations;
     for (std::size_t a = 0; a < 2; ++a)
       for (std::size_t k = 0; k < 2; ++k) iterations[a][k] += g.iterations[a][k];
-    kuu_inv = g.stiffness.topLeftCorner<6, 6>().partialPivLu().inverse();
+    kuu_inv = solver::FixedLU<6>(Matrix6d(g.stiffness.topLeftCorner<6, 6>())).inverse();
     step = -kuu_inv * g.residual;
     if (within_tolerance(g.residual) || s.evaluations >= kMaxEvaluations || !step.allFinite())
       break;

@@ -2,6 +2,7 @@
 // eqs. (30-31), finite-difference vs analytic Jacobians, the Newton criterion of the constraint
 // coupling (eqs. 45-50), and zero allocation per step.
 #include <cmath>
+#include <cstring>
 
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
@@ -11,6 +12,7 @@
 #include "model/solver/arrowhead_factorization.h"
 #include "model/solver/coupled_stepper.h"
 #include "model/solver/finite_difference.h"
+#include "model/solver/fixed_lu.h"
 #include "model/solver/force_element_stepper.h"
 #include "model/solver/kinematics_product.h"
 #include "model/solver/mechanical_stepper.h"
@@ -519,6 +521,56 @@ TEST(NoAllocation, SolverStepsAllocateNothing) {
   }
   Eigen::internal::set_is_malloc_allowed(true);
   EXPECT_EQ(counter.count(), 0u);
+}
+
+// FixedLU (model/solver/fixed_lu.h) against Eigen's PartialPivLU of the same fixed size: the
+// same factors, solutions and inverse, bit for bit, on random matrices (pivoting on), on ones
+// with a zero column and exact ties of the pivot candidates, and on a singular one.
+template <typename A, typename B>
+bool same_bits(const A& a, const B& b) {
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+}
+
+template <int N>
+void expect_fixed_lu_equals_eigen(const Eigen::Matrix<double, N, N>& a, int seed) {
+  using Mat = Eigen::Matrix<double, N, N>;
+  using Vec = Eigen::Matrix<double, N, 1>;
+  const Eigen::PartialPivLU<Mat> eigen(a);
+  const FixedLU<N> fixed(a);
+  EXPECT_TRUE(same_bits(fixed.matrix_lu(), eigen.matrixLU())) << N << " seed " << seed;
+  const Vec b = Vec::Random() * 1e3;
+  const Vec x_eigen = eigen.solve(b);
+  const Vec x_fixed = fixed.solve(b);
+  EXPECT_TRUE(same_bits(x_fixed, x_eigen)) << N << " seed " << seed;
+  const Eigen::Matrix<double, N, 3> bm = Eigen::Matrix<double, N, 3>::Random();
+  const Eigen::Matrix<double, N, 3> xm_eigen = eigen.solve(bm);
+  EXPECT_TRUE(same_bits(fixed.solve(bm), xm_eigen)) << N << " seed " << seed;
+  const Mat inv_eigen = eigen.inverse();
+  EXPECT_TRUE(same_bits(fixed.inverse(), inv_eigen)) << N << " seed " << seed;
+}
+
+template <int N>
+void fixed_lu_cases() {
+  using Mat = Eigen::Matrix<double, N, N>;
+  for (int seed = 1; seed <= 200; ++seed) {
+    std::srand(static_cast<unsigned>(seed));
+    Mat a = Mat::Random() * 1e4;
+    if (seed % 4 == 0) a += Mat::Identity() * 1e6;  // diagonally dominant: no exchanges
+    if (seed % 5 == 0) a.col(seed % N).setZero();   // a zero column: no division there
+    if (seed % 7 == 0) a(1 % N, 0) = -a(0, 0);      // tied candidates: the first is taken
+    expect_fixed_lu_equals_eigen<N>(a, seed);
+  }
+  Mat singular = Mat::Random();
+  singular.row(N - 1) = singular.row(0);
+  expect_fixed_lu_equals_eigen<N>(singular, 0);
+}
+
+TEST(FixedLU, EqualsEigensPartialPivLuBitForBit) {
+  fixed_lu_cases<2>();
+  fixed_lu_cases<3>();
+  fixed_lu_cases<6>();
+  fixed_lu_cases<7>();
 }
 
 }  // namespace
