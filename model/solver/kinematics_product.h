@@ -41,4 +41,25 @@ void subtract_dq_dy_k_inv(Eigen::Index blocks3, double alpha, const Matrix& dq_d
   }
 }
 
+/// y += alpha K^-1 z (eq. 6's prediction, eq. 8's y(k+1)) for the same K^-1: Eigen's
+/// column-major GEMV sums each entry as 0 + sum_j K(i, j) z(j) in j order and adds it times
+/// alpha; the sums below keep that order without K's zeros (solver_test
+/// KinematicsProduct.VectorEqualsTheGeneralProductBitForBit). For dynamic sizes only: Eigen sums
+/// a fixed-size product in another order.
+template <typename Matrix, typename Vector>
+void add_k_inv_times(Eigen::Index blocks3, double alpha, const Matrix& k_inv, const Vector& z,
+                     Vector& y) noexcept {
+  const Eigen::Index n = y.size();
+  for (Eigen::Index b = 0; b < blocks3; b += 3) {
+    for (Eigen::Index i = b; i < b + 3; ++i) {
+      double acc = 0.0;
+      acc += k_inv(i, b) * z(b);
+      acc += k_inv(i, b + 1) * z(b + 1);
+      acc += k_inv(i, b + 2) * z(b + 2);
+      y(i) += acc * alpha;
+    }
+  }
+  for (Eigen::Index i = blocks3; i < n; ++i) y(i) += (0.0 + z(i)) * alpha;
+}
+
 }  // namespace rig::model::solver

@@ -101,7 +101,7 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
     block_.mass_matrix(y, m_);
     // eq. (6): q at the predicted coordinates y(k) + h K^-1 z(k)
     y_pred_ = y;
-    if (evaluation_ == ForceEvaluation::kPredictedCoordinates) y_pred_.noalias() += h * k_inv_ * z;
+    if (evaluation_ == ForceEvaluation::kPredictedCoordinates) add_h_k_inv_z(h, z, y_pred_);
     const bool analytic = mode_ == JacobianMode::kAnalyticOrFiniteDifference &&
                           block_.force_jacobians(y_pred_, z, dq_dy_, dq_dz_);
     if (mode_ == JacobianMode::kNone || analytic) {
@@ -160,14 +160,14 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
     Vector& z = block_.speeds();
     z += h * (z_u_ + extra_rate);
     hold_stuck(z);  // a constraint's rate does not unstick (the friction saw only the block)
-    block_.coordinates().noalias() += h * k_inv_ * z;  // eq. (8): y(k+1) = y(k) + h K^-1 z(k+1)
+    add_h_k_inv_z(h, z, block_.coordinates());  // eq. (8): y(k+1) = y(k) + h K^-1 z(k+1)
   }
   /// finish_step without constraint forces.
   void finish_step(double h) noexcept {
     Vector& z = block_.speeds();
     z += h * z_u_;
     hold_stuck(z);
-    block_.coordinates().noalias() += h * k_inv_ * z;
+    add_h_k_inv_z(h, z, block_.coordinates());
   }
 
   // ---- inspection (valid after begin_step) ----
@@ -216,6 +216,17 @@ class MechanicalStepper final : public Stage, public CouplableSystem {
           friction_.axis(i) >= 0)
         stuck_[stuck_count_++] = friction_.axis(i);
     }
+  }
+  /// y += h K^-1 z; K^-1's structure used where the block declares it (kinematics_product.h).
+  void add_h_k_inv_z(double h, const Vector& z, Vector& y) const noexcept {
+    if constexpr (N == Eigen::Dynamic) {
+      const Eigen::Index blocks3 = block_.kinematics_block3_size();
+      if (blocks3 >= 0) {
+        add_k_inv_times(blocks3, h, k_inv_, z, y);
+        return;
+      }
+    }
+    y.noalias() += h * k_inv_ * z;
   }
   void hold_stuck(Vector& z) const noexcept {
     for (int i = 0; i < stuck_count_; ++i) z(stuck_[i]) = 0.0;

@@ -251,6 +251,27 @@ TEST(KinematicsProduct, EqualsTheGeneralProductBitForBit) {
   }
 }
 
+// y += h K^-1 z for the same K^-1 (eq. 6's prediction, eq. 8's update): equal to Eigen's GEMV
+// of the dynamic-size product bit for bit.
+TEST(KinematicsProduct, VectorEqualsTheGeneralProductBitForBit) {
+  for (Eigen::Index n = 6; n <= 24; ++n) {
+    std::srand(static_cast<unsigned>(100 + n));
+    Eigen::MatrixXd k_inv = Eigen::MatrixXd::Identity(n, n);
+    k_inv.topLeftCorner(3, 3) = Eigen::Matrix3d::Random();
+    k_inv.block(3, 3, 3, 3) = Eigen::Matrix3d::Random() * 3.0;
+    const Eigen::VectorXd z = Eigen::VectorXd::Random(n) * 30.0;
+    const Eigen::VectorXd y0 = Eigen::VectorXd::Random(n) * 100.0;
+    const double h = 1e-3;
+    Eigen::VectorXd general = y0, structured = y0;
+    general.noalias() += h * k_inv * z;
+    add_k_inv_times(6, h, k_inv, z, structured);
+    EXPECT_EQ(std::memcmp(structured.data(), general.data(),
+                          sizeof(double) * static_cast<std::size_t>(n)),
+              0)
+        << n;
+  }
+}
+
 TEST(ArrowheadFactorization, IgnoresEntriesOfTheZeroBlocks) {
   const ArrowheadPartition p{3, {2, 2}};
   Eigen::MatrixXd a = random_arrowhead(p, 11);
