@@ -36,7 +36,8 @@ void compose(const RigidPose& chassis, double chassis_yaw, const RelativeMotion&
 }  // namespace
 
 FreeBodies::FreeBodies(const VehicleParams& p, const road::Road& road, VehicleState& state,
-                       const VehicleWorkspace& work) {
+                       const VehicleWorkspace& work)
+    : chassis_(std::make_unique<PredictedChassis>(state, work)) {
   if (p.free_bodies.size() > kMaxFreeBodies)
     throw std::invalid_argument("vehicle: at most " + std::to_string(kMaxFreeBodies) +
                                 " free bodies");
@@ -49,11 +50,11 @@ FreeBodies::FreeBodies(const VehicleParams& p, const road::Road& road, VehicleSt
     const FreeBodyParams& b = p.free_bodies[i];
     const int slot = static_cast<int>(i);
     if (b.kind == FreeBodyKind::kSeat) {
-      seats_.push_back(std::make_unique<Seat>(b, road, state, work, slot));
+      seats_.push_back(std::make_unique<Seat>(b, road, state, work, slot, *chassis_));
       bodies_.push_back(nullptr);
       stages_.push_back(std::make_unique<solver::MechanicalStepper<1>>(*seats_.back()));
     } else {
-      bodies_.push_back(std::make_unique<FreeBody>(b, road, state, work, slot));
+      bodies_.push_back(std::make_unique<FreeBody>(b, road, state, work, slot, *chassis_));
       seats_.push_back(nullptr);
       stages_.push_back(std::make_unique<solver::MechanicalStepper<6>>(*bodies_.back()));
     }

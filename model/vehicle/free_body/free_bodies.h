@@ -42,6 +42,7 @@ class FreeBodies {
   void add_chassis_jacobians(const RigidPose& chassis, Mat6& dq_ds, Mat6& dq_dz) const noexcept;
 
  private:
+  std::unique_ptr<PredictedChassis> chassis_;  ///< shared by the bodies (a stable address)
   std::vector<std::unique_ptr<FreeBody>> bodies_;
   std::vector<std::unique_ptr<Seat>> seats_;
   std::vector<std::unique_ptr<solver::Stage>> stages_;

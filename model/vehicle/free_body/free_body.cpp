@@ -45,8 +45,8 @@ Mat3 rates(const Mount& m, const MountForce& f) noexcept {
 }  // namespace
 
 FreeBody::FreeBody(const FreeBodyParams& p, const road::Road& road, VehicleState& state,
-                   const VehicleWorkspace& work, int slot)
-    : MountedBody<6>(p, road, state, work, slot) {
+                   const VehicleWorkspace& work, int slot, const PredictedChassis& chassis)
+    : MountedBody<6>(p, road, state, work, slot, chassis) {
   mount_count_ = static_cast<int>(std::min<std::size_t>(p.mounts.size(), kMaxMounts));
   const Vec3 position = vec3(p.position_m);
   for (int i = 0; i < mount_count_; ++i) {

@@ -23,7 +23,7 @@ class FreeBody final : public MountedBody<6> {
   /// Its coordinates are state.free_body_y[slot], free_body_z[slot]; the chassis' are
   /// state.framework_y, framework_z; the engine torque is work.engine_torque_nm.
   FreeBody(const FreeBodyParams& p, const road::Road& road, VehicleState& state,
-           const VehicleWorkspace& work, int slot);
+           const VehicleWorkspace& work, int slot, const PredictedChassis& chassis);
 
   [[nodiscard]] Eigen::Index size() const noexcept override { return 6; }
   [[nodiscard]] Vector& coordinates() noexcept override;

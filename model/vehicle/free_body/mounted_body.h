@@ -13,33 +13,53 @@
 
 namespace rig::model::vehicle {
 
+/// The chassis where the framework will be when the free bodies' predicted coordinates are
+/// (eq. 6: the step's lookahead, VehicleWorkspace::lookahead_s): one per vehicle, shared by its
+/// free bodies (FreeBodies), computed once per chassis state.
+class PredictedChassis {
+ public:
+  /// state and work must outlive it.
+  PredictedChassis(const VehicleState& state, const VehicleWorkspace& work) noexcept
+      : state_(state), work_(work) {}
+
+  [[nodiscard]] const RigidPose& pose() const noexcept {
+    if (!key_.hit(inputs()))
+      pose_ = predicted_pose(state_.framework_y, state_.framework_z, work_.lookahead_s);
+    return pose_;
+  }
+
+  /// What pose() is computed from: the chassis' coordinates and speeds, the lookahead.
+  using Inputs = std::array<double, 13>;
+  [[nodiscard]] Inputs inputs() const noexcept {
+    Inputs in;
+    std::size_t at = put(in, 0, state_.framework_y.data(), 6);
+    at = put(in, at, state_.framework_z.data(), 6);
+    in[at] = work_.lookahead_s;
+    return in;
+  }
+
+ private:
+  const VehicleState& state_;
+  const VehicleWorkspace& work_;
+  mutable InputKey<13> key_;  // a per-step cache: const queries, one thread per unit
+  mutable RigidPose pose_;
+};
+
 template <int N>
 class MountedBody : public solver::MechanicalBlock<N> {
  public:
   [[nodiscard]] const FreeBodyParams& params() const noexcept { return p_; }
 
  protected:
-  /// p, road, state and work must outlive the body; slot: its index in the state's arrays.
+  /// p, road, state, work and chassis must outlive the body; slot: its index in the state's
+  /// arrays; chassis: the vehicle's predicted chassis, shared by its free bodies.
   MountedBody(const FreeBodyParams& p, const road::Road& road, VehicleState& state,
-              const VehicleWorkspace& work, int slot) noexcept
-      : p_(p), road_(road), state_(state), work_(work), slot_(slot) {}
+              const VehicleWorkspace& work, int slot, const PredictedChassis& chassis) noexcept
+      : p_(p), road_(road), state_(state), work_(work), slot_(slot), chassis_(chassis) {}
 
-  /// What chassis_pose() is computed from: the chassis' coordinates and speeds, the lookahead.
-  using ChassisInputs = std::array<double, 13>;
-  [[nodiscard]] ChassisInputs chassis_inputs() const noexcept {
-    ChassisInputs in;
-    std::size_t at = put(in, 0, state_.framework_y.data(), 6);
-    at = put(in, at, state_.framework_z.data(), 6);
-    in[at] = work_.lookahead_s;
-    return in;
-  }
-  /// The chassis where the framework will be when the body's predicted coordinates are (eq. 6:
-  /// the step's lookahead, VehicleWorkspace::lookahead_s); computed once per chassis state.
-  [[nodiscard]] const RigidPose& chassis_pose() const noexcept {
-    if (!chassis_key_.hit(chassis_inputs()))
-      chassis_ = predicted_pose(state_.framework_y, state_.framework_z, work_.lookahead_s);
-    return chassis_;
-  }
+  [[nodiscard]] const RigidPose& chassis_pose() const noexcept { return chassis_.pose(); }
+  using ChassisInputs = PredictedChassis::Inputs;
+  [[nodiscard]] ChassisInputs chassis_inputs() const noexcept { return chassis_.inputs(); }
   [[nodiscard]] std::size_t slot() const noexcept { return static_cast<std::size_t>(slot_); }
 
   const FreeBodyParams& p_;
@@ -49,8 +69,7 @@ class MountedBody : public solver::MechanicalBlock<N> {
   int slot_;
 
  private:
-  mutable InputKey<13> chassis_key_;  // per-step caches: const queries, one thread per unit
-  mutable RigidPose chassis_;
+  const PredictedChassis& chassis_;
 };
 
 }  // namespace rig::model::vehicle

@@ -5,8 +5,8 @@
 namespace rig::model::vehicle {
 
 Seat::Seat(const FreeBodyParams& p, const road::Road& road, VehicleState& state,
-           const VehicleWorkspace& work, int slot)
-    : MountedBody<1>(p, road, state, work, slot) {
+           const VehicleWorkspace& work, int slot, const PredictedChassis& chassis)
+    : MountedBody<1>(p, road, state, work, slot, chassis) {
   point_ = Vec3(p.position_m[0], p.position_m[1], p.position_m[2]);
   if (!p.mounts.empty()) {
     const MountParams& m = p.mounts.front();

@@ -16,7 +16,7 @@ class Seat final : public MountedBody<1> {
  public:
   /// Its coordinate is state.seat_y[slot], its speed state.seat_z[slot].
   Seat(const FreeBodyParams& p, const road::Road& road, VehicleState& state,
-       const VehicleWorkspace& work, int slot);
+       const VehicleWorkspace& work, int slot, const PredictedChassis& chassis);
 
   [[nodiscard]] Eigen::Index size() const noexcept override { return 1; }
   [[nodiscard]] Vector& coordinates() noexcept override;

@@ -96,6 +96,7 @@ struct Bench {
   road::Road road;
   VehicleState s;
   VehicleWorkspace work;
+  PredictedChassis chassis{s, work};
   std::unique_ptr<FreeBody> body;
   std::unique_ptr<Seat> seat_block;
   std::unique_ptr<solver::Stage> stepper;
@@ -106,10 +107,10 @@ struct Bench {
     s.framework_y(2) = 1.0;
     work.lookahead_s = kH;  // as VehicleBlocks::update_contacts sets it for the step
     if (b.kind == FreeBodyKind::kSeat) {
-      seat_block = std::make_unique<Seat>(p.free_bodies[0], road, s, work, 0);
+      seat_block = std::make_unique<Seat>(p.free_bodies[0], road, s, work, 0, chassis);
       stepper = std::make_unique<solver::MechanicalStepper<1>>(*seat_block);
     } else {
-      body = std::make_unique<FreeBody>(p.free_bodies[0], road, s, work, 0);
+      body = std::make_unique<FreeBody>(p.free_bodies[0], road, s, work, 0, chassis);
       stepper = std::make_unique<solver::MechanicalStepper<6>>(*body);
     }
     place_free_bodies(p, s);
