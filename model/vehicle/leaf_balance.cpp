@@ -4,10 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include <Eigen/LU>
-
 #include "model/solver/fixed_lu.h"
-
 #include "model/vehicle/leaf_spring/turned_leaf.h"
 
 namespace rig::model::vehicle {
@@ -92,7 +89,7 @@ LeafBalance::Group LeafBalance::evaluate(const Vector6d& u, const Eigen::Vector4
     for (Eigen::Index side = 0; side < 2; ++side) {
       const double lever = side == 0 ? axle.half_track_m() : -axle.half_track_m();
       // (x, z, pitch, alpha) = M (u, e) + (0, rest height, 0, 0): M selects five of the ten
-      // unknowns, unknown kCol[j] entering pose row kRow[j] with factor coef[j]; applied by
+      // unknowns, unknown col[j] entering pose row kRow[j] with factor coef[j]; applied by
       // index (as dense 4 x 10 products these went through Eigen's general matrix kernels, 10 k
       // instructions per step; each sum has at most two non-zero terms, so the same bits)
       const std::array<Eigen::Index, 5> col = {2 * a, 6 + 2 * a, 7 + 2 * a, 2 * a + 1, 4 + side};

@@ -19,11 +19,6 @@ RigidAxleGeometry rigid_axle_geometry(const AxleParams& a, double cg_height_m,
 }
 
 RigidWheelPoint rigid_wheel_point(const RigidAxleGeometry& g, int side, double heave_m,
-                                  double roll_rad) noexcept {
-  return rigid_wheel_point(g, side, heave_m, sin_cos(roll_rad));
-}
-
-RigidWheelPoint rigid_wheel_point(const RigidAxleGeometry& g, int side, double heave_m,
                                   const SinCos& roll) noexcept {
   const Vec3& d0 = g.wheel_from_centre_m[static_cast<std::size_t>(side)];
   const double c = roll.cos, s = roll.sin;

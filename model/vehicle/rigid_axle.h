@@ -64,16 +64,13 @@ struct RigidAxleGeometry {
                                                     const Vec3& left_centre_m,
                                                     const Vec3& right_centre_m) noexcept;
 
-/// A wheel of the axle at (heave, roll): its centre, d centre/d roll, and the centre's offset
-/// from the (moved) roll centre.
+/// A wheel of the axle at heave and roll (given by its sine and cosine): its centre,
+/// d centre/d roll, and the centre's offset from the (moved) roll centre.
 struct RigidWheelPoint {
   Vec3 centre_m;
   Vec3 d_droll_m;    ///< e_x x Rx(phi)(p0 - c0)
   Vec3 from_axis_m;  ///< Rx(phi)(p0 - c0)
 };
-[[nodiscard]] RigidWheelPoint rigid_wheel_point(const RigidAxleGeometry& g, int side,
-                                                double heave_m, double roll_rad) noexcept;
-/// The same with the roll's sine and cosine given.
 [[nodiscard]] RigidWheelPoint rigid_wheel_point(const RigidAxleGeometry& g, int side,
                                                 double heave_m, const SinCos& roll) noexcept;
 

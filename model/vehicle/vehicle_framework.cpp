@@ -137,7 +137,7 @@ LocalRoadPlane VehicleFramework::road_plane(const Mat3& rot, const Vector& y, co
   const Vec3 velocity = rot * (z.segment<3>(0) + z.segment<3>(3).cross(r));  // road frame
   const Vec3 centre = y.head<3>() + rot * r + lookahead_s * velocity;
   // behind the frame's split the spin axis turns with the twist (rigid or independent alike)
-  const Vec3 spin = rot * (twisted(i) ? twist_rotate(y(twist_), work_.wheels[k].spin_axis)
+  const Vec3 spin = rot * (twisted(i) ? twist_rotation(y) * work_.wheels[k].spin_axis
                                       : work_.wheels[k].spin_axis);
   const Vec3 heading = spin.cross(Vec3::UnitZ()).normalized();
   const Vec3 down = spin.cross(heading);  // in the wheel plane, at right angles to the heading

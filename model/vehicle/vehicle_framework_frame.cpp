@@ -32,7 +32,7 @@ VehicleFramework::RearWheelPose VehicleFramework::rear_wheel_pose(int i,
 
 void VehicleFramework::frame_mass_matrix(const Vector& y, Matrix& m) const noexcept {
   const double mr = frame_.rear_mass_kg;
-  const TwistedPoint c = twisted_point(frame_, frame_.rear_cg_m, y(twist_));
+  const TwistedPoint c = twisted_point(frame_, frame_.rear_cg_m, twist_rotation(y));
   // the chassis holds the rear part's mass at its design CG c0: move it to c(theta)
   const Mat3 rx = skew(c.point_m), rx0 = skew(frame_.rear_cg_m);
   m.block<3, 3>(0, 3) -= mr * (rx - rx0);
@@ -97,7 +97,7 @@ void VehicleFramework::frame_applied(const Vector& y, const Vector& z, const Vec
   const Vec3 v = z.segment<3>(0), w = z.segment<3>(3);
   const double mr = frame_.rear_mass_kg, td = z(twist_);
   const Vec3& c0 = frame_.rear_cg_m;
-  const TwistedPoint c = twisted_point(frame_, c0, y(twist_));
+  const TwistedPoint c = twisted_point(frame_, c0, twist_rotation(y));
   // the rear part's point mass at c(theta) instead of the chassis' c0 (same terms at theta = 0)
   const Vec3 a0 = w.cross(v) + w.cross(w.cross(c.point_m)) + 2.0 * td * w.cross(c.d_dtwist_m) +
                   td * td * ex_cross(c.d_dtwist_m);

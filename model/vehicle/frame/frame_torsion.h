@@ -58,17 +58,10 @@ struct FrameGeometry {
 /// e_x x v
 [[nodiscard]] inline Vec3 ex_cross(const Vec3& v) noexcept { return {0.0, -v.z(), v.y()}; }
 
-/// Rx(theta) v
-[[nodiscard]] inline Vec3 twist_rotate(double theta, const Vec3& v) noexcept {
-  const double c = std::cos(theta), s = std::sin(theta);
-  return {v.x(), c * v.y() - s * v.z(), s * v.y() + c * v.z()};
-}
-
-/// Rx(theta) by its cosine and sine, for several vectors at one twist (the same arithmetic as
-/// twist_rotate, the cosine and sine taken once).
+/// Rx(theta) by its cosine and sine (the framework takes them once per twist, SinCosMemo), for
+/// several vectors at one twist: Rx(theta) v.
 struct TwistRotation {
   double c = 1.0, s = 0.0;
-  explicit TwistRotation(double theta) noexcept : c(std::cos(theta)), s(std::sin(theta)) {}
   explicit TwistRotation(const SinCos& theta) noexcept : c(theta.cos), s(theta.sin) {}
   [[nodiscard]] Vec3 operator*(const Vec3& v) const noexcept {
     return {v.x(), c * v.y() - s * v.z(), s * v.y() + c * v.z()};
@@ -84,10 +77,6 @@ struct TwistedPoint {
   const Vec3 axis(p0.x(), 0.0, g.axis_z_m);
   const Vec3 from_axis = rx * (p0 - axis);
   return {axis + from_axis, ex_cross(from_axis)};
-}
-[[nodiscard]] inline TwistedPoint twisted_point(const FrameGeometry& g, const Vec3& p0,
-                                                double theta) noexcept {
-  return twisted_point(g, p0, TwistRotation(theta));
 }
 
 /// The torsion moment the frame transmits (+ resisting a + twist) [N m] and its partials.
